@@ -1,0 +1,72 @@
+//! The typed error of the core crate; every variant names the offending value.
+
+use std::fmt;
+
+/// Errors from constructing core values or converting inputs.
+#[derive(Debug, Clone, PartialEq)]
+pub enum CoreError {
+    /// A word width outside 1..=64 bits.
+    InvalidWidth(u32),
+    /// A digit exponent q outside 1..=8 (base 2^q).
+    InvalidDigitBits(u32),
+    /// A base that is not 2^q with q in 1..=8.
+    NotPowerOfTwoBase(u64),
+    /// A float input that is NaN.
+    NotANumber,
+    /// A float input outside [0, 1).
+    OutOfUnitInterval(f64),
+    /// A float in [0,1) that is not a multiple of 2^-width, so no word holds it exactly.
+    NotRepresentable { value: f64, width: u32 },
+    /// A word with bits set above the width.
+    WordTooWide { word: u64, width: u32 },
+    /// A slice that is not a permutation of 0..n.
+    NotAPermutation { reason: String },
+    /// A permutation size that is not supported (must be 1..=256).
+    InvalidPermutationSize(usize),
+    /// A GF(2) matrix of size outside 1..=8 or an entry outside it.
+    InvalidMatrix { reason: String },
+    /// A scrambler name that no registry entry has.
+    UnknownScrambler { name: String, known: Vec<String> },
+    /// A scrambler option that the named scrambler does not accept, or a bad value.
+    InvalidOption { scrambler: String, option: String, reason: String },
+}
+
+impl fmt::Display for CoreError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            CoreError::InvalidWidth(w) => write!(f, "word width {w} is not in 1..=64 bits"),
+            CoreError::InvalidDigitBits(q) => {
+                write!(f, "digit size q = {q} is not in 1..=8 (base 2^q from 2 to 256)")
+            }
+            CoreError::NotPowerOfTwoBase(b) => {
+                write!(f, "base {b} is not a power of two 2^q with q in 1..=8")
+            }
+            CoreError::NotANumber => write!(f, "value is NaN"),
+            CoreError::OutOfUnitInterval(v) => write!(f, "value {v} is outside [0, 1)"),
+            CoreError::NotRepresentable { value, width } => write!(
+                f,
+                "value {value:e} is not a multiple of 2^-{width}, so no {width}-bit word holds it exactly"
+            ),
+            CoreError::WordTooWide { word, width } => {
+                write!(f, "word {word:#x} has bits set above width {width}")
+            }
+            CoreError::NotAPermutation { reason } => write!(f, "not a permutation: {reason}"),
+            CoreError::InvalidPermutationSize(n) => {
+                write!(f, "permutation size {n} is not in 1..=256")
+            }
+            CoreError::InvalidMatrix { reason } => write!(f, "invalid GF(2) matrix: {reason}"),
+            CoreError::UnknownScrambler { name, known } => write!(
+                f,
+                "unknown scrambler '{name}'; known scramblers: {}",
+                known.join(", ")
+            ),
+            CoreError::InvalidOption {
+                scrambler,
+                option,
+                reason,
+            } => write!(f, "scrambler '{scrambler}': option '{option}': {reason}"),
+        }
+    }
+}
+
+impl std::error::Error for CoreError {}

@@ -1,0 +1,105 @@
+//! Word ↔ float conversion. Word → float truncates (never rounds up, so never 1.0);
+//! float → word is exact or an error.
+
+use crate::{CoreError, Width};
+
+/// The value of a W-bit word as f32, truncated to its top 24 bits: always in [0, 1).
+///
+/// ```
+/// use gartowen_core::{word_to_f32, Width};
+/// assert!(word_to_f32(0xFFFF_FFFF, Width::W32) < 1.0);
+/// assert_eq!(word_to_f32(0x8000_0000, Width::W32), 0.5);
+/// ```
+#[inline(always)]
+pub fn word_to_f32(x: u64, width: Width) -> f32 {
+    let w = width.bits();
+    if w > 24 {
+        ((x >> (w - 24)) as u32) as f32 * (1.0 / 16_777_216.0)
+    } else {
+        // Exact: a W ≤ 24-bit integer fits the f32 significand.
+        (x as u32) as f32 * f32::powi(2.0, -(w as i32))
+    }
+}
+
+/// The value of a W-bit word as f64, truncated to its top 53 bits: always in [0, 1).
+///
+/// ```
+/// use gartowen_core::{word_to_f64, Width};
+/// assert!(word_to_f64(u64::MAX, Width::W64) < 1.0);
+/// assert_eq!(word_to_f64(0x4000_0000, Width::W32), 0.25);
+/// ```
+#[inline(always)]
+pub fn word_to_f64(x: u64, width: Width) -> f64 {
+    let w = width.bits();
+    if w > 53 {
+        (x >> (w - 53)) as f64 * (1.0 / 9_007_199_254_740_992.0)
+    } else {
+        x as f64 * f64::powi(2.0, -(w as i32))
+    }
+}
+
+/// The W-bit word whose value is exactly `v`.
+///
+/// Errors: NaN, values outside [0, 1) and values that are not multiples of 2^-W.
+///
+/// ```
+/// use gartowen_core::{word_from_f64, Width, CoreError};
+/// assert_eq!(word_from_f64(0.75, Width::W32), Ok(0xC000_0000));
+/// assert!(matches!(word_from_f64(1.0, Width::W32), Err(CoreError::OutOfUnitInterval(_))));
+/// assert!(matches!(word_from_f64(0.1, Width::W32), Err(CoreError::NotRepresentable { .. })));
+/// ```
+pub fn word_from_f64(v: f64, width: Width) -> Result<u64, CoreError> {
+    if v.is_nan() {
+        return Err(CoreError::NotANumber);
+    }
+    if !(0.0..1.0).contains(&v) {
+        return Err(CoreError::OutOfUnitInterval(v));
+    }
+    // Scaling by a power of two is exact for v in [0,1) (no overflow, no subnormal issue
+    // that would make a non-integer look like an integer).
+    let scaled = v * f64::powi(2.0, width.bits() as i32);
+    if scaled.fract() != 0.0 {
+        return Err(CoreError::NotRepresentable {
+            value: v,
+            width: width.bits(),
+        });
+    }
+    Ok(scaled as u64)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn truncation_never_reaches_one() {
+        for w in 1..=64 {
+            let width = Width::new(w).unwrap();
+            assert!(word_to_f32(width.max_word(), width) < 1.0, "f32 W={w}");
+            assert!(word_to_f64(width.max_word(), width) < 1.0, "f64 W={w}");
+        }
+    }
+
+    #[test]
+    fn f64_round_trip_of_every_16_bit_word() {
+        let w = Width::new(16).unwrap();
+        for x in w.all_words() {
+            assert_eq!(word_from_f64(word_to_f64(x, w), w), Ok(x));
+            assert_eq!(word_to_f32(x, w) as f64, word_to_f64(x, w));
+        }
+    }
+
+    #[test]
+    fn rejects_bad_floats() {
+        let w = Width::W32;
+        assert_eq!(word_from_f64(f64::NAN, w), Err(CoreError::NotANumber));
+        assert_eq!(
+            word_from_f64(-0.25, w),
+            Err(CoreError::OutOfUnitInterval(-0.25))
+        );
+        assert!(word_from_f64(f64::INFINITY, w).is_err());
+        assert!(word_from_f64(2f64.powi(-33), w).is_err());
+        assert_eq!(word_from_f64(2f64.powi(-32), w), Ok(1));
+        assert_eq!(word_from_f64(1.0 - 2f64.powi(-53), Width::W64), Ok(u64::MAX - 2047));
+    }
+}

@@ -1,0 +1,26 @@
+//! Core arithmetic of gartowen: W-bit words, base-2^q digits, packed permutations,
+//! GF(2) matrices, counter-based hashing, float conversion and the [`Scrambler`] trait.
+//!
+//! Everything here is dependency-free, and the per-word paths do not allocate.
+//! Conventions follow `DESIGN.md` section 1: a coordinate is a W-bit word `x` whose value is
+//! `x · 2^-W`; digit 0 is the most significant digit.
+
+pub mod digits;
+pub mod error;
+pub mod float;
+pub mod gf2;
+pub mod hash;
+pub mod perm;
+pub mod registry;
+pub mod scrambler;
+pub mod width;
+
+pub use digits::{DigitLayout, PowerOfTwoBase};
+pub use error::CoreError;
+pub use float::{word_from_f64, word_to_f32, word_to_f64};
+pub use gf2::Gf2Matrix;
+pub use hash::{derive_seed, hash_words, mix64, SplitMix64};
+pub use perm::Permutation;
+pub use registry::{Registry, ScramblerRequest, ScramblerSpec};
+pub use scrambler::{Identity, Scrambler};
+pub use width::Width;

@@ -1,0 +1,85 @@
+//! The one trait every scrambler implements, the exact oracle included.
+
+use crate::{word_to_f32, word_to_f64, PowerOfTwoBase, Width};
+
+/// A random bijection of W-bit words, applied per dimension, that claims to be (at least)
+/// a nested scramble in base 2^q.
+///
+/// Instances are built with their seed (see [`crate::Registry`]); `scramble` is then a pure
+/// function of (word, width, dimension), so it is random-access and thread-safe.
+/// Bits of the input above `width` must be zero; outputs keep them zero.
+pub trait Scrambler: Send + Sync {
+    /// The registry name (kebab-case), with options, e.g. `owen-oracle:xor`.
+    fn name(&self) -> String;
+
+    /// The scrambling base 2^q.
+    fn base(&self) -> PowerOfTwoBase;
+
+    /// Whether the implementation claims to be a nested uniform (Owen) scramble: every node
+    /// permutation independent and uniform over S_b.
+    fn claims_nested_uniform(&self) -> bool;
+
+    /// Whether `width`-bit words are supported (32 and 64 always; small widths for tests).
+    fn supports_width(&self, width: Width) -> bool {
+        let _ = width;
+        true
+    }
+
+    /// The scrambled word for dimension `dim`.
+    fn scramble(&self, x: u64, width: Width, dim: u32) -> u64;
+
+    /// The inverse of [`Scrambler::scramble`]: `unscramble(scramble(x)) == x`.
+    fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64;
+
+    /// Bytes of tables the scrambler holds (0 for stateless ones).
+    fn table_bytes(&self) -> usize {
+        0
+    }
+
+    /// 32-bit convenience form of [`Scrambler::scramble`].
+    #[inline]
+    fn scramble_u32(&self, x: u32, dim: u32) -> u32 {
+        self.scramble(x as u64, Width::W32, dim) as u32
+    }
+
+    /// 64-bit convenience form of [`Scrambler::scramble`].
+    #[inline]
+    fn scramble_u64(&self, x: u64, dim: u32) -> u64 {
+        self.scramble(x, Width::W64, dim)
+    }
+
+    /// The scrambled value as f32, truncated (never 1.0).
+    fn scramble_f32(&self, x: u64, width: Width, dim: u32) -> f32 {
+        word_to_f32(self.scramble(x, width, dim), width)
+    }
+
+    /// The scrambled value as f64, truncated (never 1.0).
+    fn scramble_f64(&self, x: u64, width: Width, dim: u32) -> f64 {
+        word_to_f64(self.scramble(x, width, dim), width)
+    }
+}
+
+/// The identity map: the "unscrambled" reference. It is trivially a nested scramble (every
+/// node permutation is the identity) but of course not a uniform one.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Identity;
+
+impl Scrambler for Identity {
+    fn name(&self) -> String {
+        "none".into()
+    }
+    fn base(&self) -> PowerOfTwoBase {
+        PowerOfTwoBase::B2
+    }
+    fn claims_nested_uniform(&self) -> bool {
+        false
+    }
+    #[inline]
+    fn scramble(&self, x: u64, _width: Width, _dim: u32) -> u64 {
+        x
+    }
+    #[inline]
+    fn unscramble(&self, y: u64, _width: Width, _dim: u32) -> u64 {
+        y
+    }
+}

@@ -1,0 +1,1 @@
+//! Exact, readable reference implementations that the fast paths are judged against.

@@ -1,0 +1,14 @@
+//! gartowen: generate, scramble and verify quasi-Monte Carlo point sets in bases 2^q.
+//!
+//! This facade re-exports the workspace crates and assembles the one scrambler [`registry`].
+
+pub use gartowen_core as core;
+pub use gartowen_oracles as oracles;
+pub use gartowen_seq as seq;
+
+use gartowen_core::Registry;
+
+/// Every scrambler gartowen knows, in one list; cross-checks iterate over it.
+pub fn registry() -> Registry {
+    Registry::with_core()
+}
