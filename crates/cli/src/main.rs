@@ -1,1 +1,43 @@
-fn main() {}
+//! The `gartowen` command-line tool.
+
+mod commands;
+mod error;
+mod output;
+
+use clap::{Parser, Subcommand};
+use error::CliError;
+use std::process::ExitCode;
+
+/// gartowen: generate, scramble and verify quasi-Monte Carlo point sets in bases 2^q.
+///
+/// Points are W-bit words x with value x·2^-W in [0,1). Sequences are digital: point n of
+/// dimension j XORs the generator columns at the set bits of n.
+#[derive(Parser)]
+#[command(name = "gartowen", version, about, long_about = None, propagate_version = true)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    Generate(commands::generate::GenerateArgs),
+    Matrices(commands::matrices::MatricesArgs),
+    List(commands::list::ListArgs),
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Generate(a) => commands::generate::run(a),
+        Command::Matrices(a) => commands::matrices::run(a),
+        Command::List(a) => commands::list::run(a),
+    };
+    match result {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("gartowen: error: {e}");
+            ExitCode::from(e.exit_code())
+        }
+    }
+}

@@ -28,7 +28,11 @@ pub enum CoreError {
     /// A scrambler name that no registry entry has.
     UnknownScrambler { name: String, known: Vec<String> },
     /// A scrambler option that the named scrambler does not accept, or a bad value.
-    InvalidOption { scrambler: String, option: String, reason: String },
+    InvalidOption {
+        scrambler: String,
+        option: String,
+        reason: String,
+    },
 }
 
 impl fmt::Display for CoreError {

@@ -100,6 +100,9 @@ mod tests {
         assert!(word_from_f64(f64::INFINITY, w).is_err());
         assert!(word_from_f64(2f64.powi(-33), w).is_err());
         assert_eq!(word_from_f64(2f64.powi(-32), w), Ok(1));
-        assert_eq!(word_from_f64(1.0 - 2f64.powi(-53), Width::W64), Ok(u64::MAX - 2047));
+        assert_eq!(
+            word_from_f64(1.0 - 2f64.powi(-53), Width::W64),
+            Ok(u64::MAX - 2047)
+        );
     }
 }

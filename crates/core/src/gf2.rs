@@ -153,7 +153,11 @@ impl Gf2Matrix {
     /// A uniformly random invertible q×q matrix: uniform random bits, rejected until invertible.
     pub fn random_invertible(q: u32, rng: &mut SplitMix64) -> Result<Gf2Matrix, CoreError> {
         Gf2Matrix::identity(q)?;
-        let mask = if q == 8 { u64::MAX } else { (1u64 << (8 * q)) - 1 };
+        let mask = if q == 8 {
+            u64::MAX
+        } else {
+            (1u64 << (8 * q)) - 1
+        };
         let col_mask = ((1u32 << q) - 1) as u8;
         loop {
             let raw = rng.next_u64() & mask;
@@ -170,7 +174,9 @@ impl Gf2Matrix {
         assert!((1..=3).contains(&q), "enumeration is meant for q ≤ 3");
         let mut out = Vec::new();
         for bits in 0u32..(1 << (q * q)) {
-            let rows: Vec<u8> = (0..q).map(|i| ((bits >> (q * i)) & ((1 << q) - 1)) as u8).collect();
+            let rows: Vec<u8> = (0..q)
+                .map(|i| ((bits >> (q * i)) & ((1 << q) - 1)) as u8)
+                .collect();
             let m = Gf2Matrix::from_rows(q, &rows).expect("valid rows");
             if m.is_invertible() {
                 out.push(m);

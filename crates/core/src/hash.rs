@@ -83,7 +83,10 @@ impl SplitMix64 {
 /// enumerate every draw at small sizes.
 #[inline]
 pub fn lemire_bounded(n: u64, bits: u32, mut draw: impl FnMut() -> u64) -> u64 {
-    assert!(n >= 1 && bits <= 32 && n <= 1u64 << bits, "bad bounded draw");
+    assert!(
+        n >= 1 && bits <= 32 && n <= 1u64 << bits,
+        "bad bounded draw"
+    );
     let mask = (1u64 << bits) - 1;
     let mut m = (draw() & mask) * n;
     let mut low = m & mask;

@@ -38,7 +38,9 @@ impl DigitalSequence {
             }
             let mut arr = [0u64; 64];
             for (c, &w) in cols.iter().enumerate() {
-                width.check(w).map_err(|e| SeqError::InvalidField(e.to_string()))?;
+                width
+                    .check(w)
+                    .map_err(|e| SeqError::InvalidField(e.to_string()))?;
                 arr[c] = w;
             }
             packed.push(arr);

@@ -8,7 +8,11 @@ pub enum SeqError {
     /// Zero dimensions requested.
     NoDimensions,
     /// More dimensions than the sequence defines.
-    TooManyDimensions { sequence: String, requested: usize, max: usize },
+    TooManyDimensions {
+        sequence: String,
+        requested: usize,
+        max: usize,
+    },
     /// A sequence name that does not exist.
     UnknownSequence(String),
     /// An index at or past 2^(index bits).

@@ -122,3 +122,22 @@ impl SmallField {
         Gf2Matrix::from_rows(q, &rows).expect("q ≤ 4")
     }
 }
+
+/// The 4×4 binary expansion of a 2×2 GF(4) matrix `g`: entry (2i+u, 2j+v) is M4(g[i][j])[u][v].
+/// Used for E(α) and for M16 in the design's formulation.
+pub fn expand_gf4_matrix(g: [[u32; 2]; 2]) -> Gf2Matrix {
+    let mut rows = [0u8; 4];
+    for (i, g_row) in g.iter().enumerate() {
+        for (j, &entry) in g_row.iter().enumerate() {
+            let m4 = SmallField::Gf4.mult_matrix(entry);
+            for u in 0..2 {
+                for v in 0..2 {
+                    if m4.get(u, v) {
+                        rows[2 * i + u as usize] |= 1 << (2 * j + v as usize);
+                    }
+                }
+            }
+        }
+    }
+    Gf2Matrix::from_rows(4, &rows).expect("4×4")
+}

@@ -8,7 +8,7 @@
 //!   expansion of the GF(4) matrix [[1, α], [0, 1]].
 
 use crate::faure::pascal_columns;
-use crate::field::{gf4_mul, SmallField, OMEGA, OMEGA2};
+use crate::field::{expand_gf4_matrix, gf4_mul, SmallField, OMEGA, OMEGA2};
 use crate::{DigitalSequence, SeqError};
 use gartowen_core::{Gf2Matrix, PowerOfTwoBase, Width};
 
@@ -20,21 +20,7 @@ pub fn u_matrix() -> Gf2Matrix {
 /// E(α): the 4×4 binary expansion of the GF(4) matrix [[1, α], [0, 1]], entry (2i+u, 2j+v) =
 /// M4(G[i][j])[u][v].
 pub fn e_matrix(alpha: u32) -> Gf2Matrix {
-    let g = [[1, alpha], [0, 1]];
-    let mut rows = [0u8; 4];
-    for i in 0..2 {
-        for j in 0..2 {
-            let m = SmallField::Gf4.mult_matrix(g[i][j]);
-            for u in 0..2 {
-                for v in 0..2 {
-                    if m.get(u as u32, v as u32) {
-                        rows[2 * i + u] |= 1 << (2 * j + v);
-                    }
-                }
-            }
-        }
-    }
-    Gf2Matrix::from_rows(4, &rows).expect("4×4")
+    expand_gf4_matrix([[1, alpha], [0, 1]])
 }
 
 /// blockdiag(U, U) on a 4-bit digit.
@@ -104,10 +90,24 @@ fn build(
 
 /// The first `dims` (≤ 4) dimensions of sz4 with W-bit words and W index bits.
 pub fn sz4(dims: usize, width: Width) -> Result<DigitalSequence, SeqError> {
-    build("sz4", SmallField::Gf4, sz4_parameters, SZ4_DIMS, dims, width)
+    build(
+        "sz4",
+        SmallField::Gf4,
+        sz4_parameters,
+        SZ4_DIMS,
+        dims,
+        width,
+    )
 }
 
 /// The first `dims` (≤ 16) dimensions of sz16 with W-bit words and W index bits.
 pub fn sz16(dims: usize, width: Width) -> Result<DigitalSequence, SeqError> {
-    build("sz16", SmallField::Gf16, sz16_parameters, SZ16_DIMS, dims, width)
+    build(
+        "sz16",
+        SmallField::Gf16,
+        sz16_parameters,
+        SZ16_DIMS,
+        dims,
+        width,
+    )
 }

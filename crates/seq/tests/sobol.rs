@@ -9,7 +9,11 @@ use proptest::prelude::*;
 fn read_hex(text: &str) -> Vec<Vec<u64>> {
     text.lines()
         .filter(|l| !l.starts_with('#'))
-        .map(|l| l.split_whitespace().map(|h| u64::from_str_radix(h, 16).unwrap()).collect())
+        .map(|l| {
+            l.split_whitespace()
+                .map(|h| u64::from_str_radix(h, 16).unwrap())
+                .collect()
+        })
         .collect()
 }
 
@@ -28,12 +32,22 @@ fn assert_matches_scipy(text: &str, dims: usize, first_dim: usize, width: Width)
 
 #[test]
 fn equals_scipy_32_bit_first_40_dims() {
-    assert_matches_scipy(include_str!("data/scipy_sobol_d40_n512_b32.hex"), 40, 0, Width::W32);
+    assert_matches_scipy(
+        include_str!("data/scipy_sobol_d40_n512_b32.hex"),
+        40,
+        0,
+        Width::W32,
+    );
 }
 
 #[test]
 fn equals_scipy_64_bit() {
-    assert_matches_scipy(include_str!("data/scipy_sobol_d8_n256_b64.hex"), 8, 0, Width::W64);
+    assert_matches_scipy(
+        include_str!("data/scipy_sobol_d8_n256_b64.hex"),
+        8,
+        0,
+        Width::W64,
+    );
 }
 
 #[test]
@@ -73,7 +87,10 @@ fn gray_iteration_from_an_offset_and_range_checks() {
         n += 1;
     }
     assert_eq!(n, 4096);
-    assert!(seq.gray_iter(0, 4097).is_err(), "12 index bits hold 4096 points");
+    assert!(
+        seq.gray_iter(0, 4097).is_err(),
+        "12 index bits hold 4096 points"
+    );
     assert!(seq.try_point(4096, 0).is_err());
 }
 

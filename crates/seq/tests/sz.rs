@@ -1,18 +1,30 @@
 //! sz4/sz16 against the check values and identities of DESIGN.md §2.
 
-use gartowen_core::{Gf2Matrix, Width};
-use gartowen_seq::field::{gf16_mul, gf4_mul, SmallField, OMEGA};
+use gartowen_core::Width;
+use gartowen_seq::field::{expand_gf4_matrix, gf16_mul, gf4_mul, SmallField, OMEGA};
 use gartowen_seq::{sobol, sz};
 
 #[test]
 fn sz4_check_columns_from_the_design() {
     let s = sz::sz4(4, Width::W32).unwrap();
     let dim2 = [
-        0x80000000u64, 0x40000000, 0x60000000, 0xd0000000, 0xc8000000, 0x84000000, 0xb6000000,
+        0x80000000u64,
+        0x40000000,
+        0x60000000,
+        0xd0000000,
+        0xc8000000,
+        0x84000000,
+        0xb6000000,
         0x6d000000,
     ];
     let dim3 = [
-        0x80000000u64, 0xc0000000, 0x60000000, 0xb0000000, 0xc8000000, 0x4c000000, 0xb6000000,
+        0x80000000u64,
+        0xc0000000,
+        0x60000000,
+        0xb0000000,
+        0xc8000000,
+        0x4c000000,
+        0xb6000000,
         0xdb000000,
     ];
     assert_eq!(&s.columns(2)[..8], &dim2);
@@ -63,7 +75,11 @@ fn gf4_and_gf16_are_fields() {
                 }
             }
             if a != 0 {
-                assert_eq!((0..f).filter(|&b| mul(a, b) == 1).count(), 1, "inverse of {a}");
+                assert_eq!(
+                    (0..f).filter(|&b| mul(a, b) == 1).count(),
+                    1,
+                    "inverse of {a}"
+                );
             }
         }
     }
@@ -80,20 +96,7 @@ fn m16_by_the_design_formula_equals_the_multiplication_matrix() {
     for a in 0..16u32 {
         let (alpha, beta) = (a & 3, a >> 2);
         let g = [[alpha, gf4_mul(beta, OMEGA)], [beta, alpha ^ beta]];
-        let mut rows = [0u8; 4];
-        for i in 0..2 {
-            for j in 0..2 {
-                let m4 = SmallField::Gf4.mult_matrix(g[i][j]);
-                for u in 0..2 {
-                    for v in 0..2 {
-                        if m4.get(u, v) {
-                            rows[2 * i + u as usize] |= 1 << (2 * j + v as usize);
-                        }
-                    }
-                }
-            }
-        }
-        let by_design = Gf2Matrix::from_rows(4, &rows).unwrap();
+        let by_design = expand_gf4_matrix(g);
         assert_eq!(SmallField::Gf16.mult_matrix(a), by_design, "a = {a}");
     }
 }
@@ -102,8 +105,14 @@ fn m16_by_the_design_formula_equals_the_multiplication_matrix() {
 fn faure_over_gf2_is_the_binary_pascal_matrix() {
     use gartowen_seq::faure::faure_columns;
     let sob = sobol::sequence(2, Width::W32).unwrap();
-    assert_eq!(faure_columns(SmallField::Gf2, 1, Width::W32, 32), sob.columns(1));
-    assert_eq!(faure_columns(SmallField::Gf2, 0, Width::W32, 32), sob.columns(0));
+    assert_eq!(
+        faure_columns(SmallField::Gf2, 1, Width::W32, 32),
+        sob.columns(1)
+    );
+    assert_eq!(
+        faure_columns(SmallField::Gf2, 0, Width::W32, 32),
+        sob.columns(0)
+    );
 }
 
 #[test]

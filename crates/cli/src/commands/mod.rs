@@ -1,0 +1,18 @@
+//! One module per subcommand.
+
+pub mod generate;
+pub mod list;
+pub mod matrices;
+
+use crate::CliError;
+use gartowen::core::Width;
+
+/// The word width from `--bits` (32 or 64).
+pub fn width_from_bits(bits: u32) -> Result<Width, CliError> {
+    match bits {
+        32 | 64 => Ok(Width::new(bits)?),
+        _ => Err(CliError::Usage(format!(
+            "--bits must be 32 or 64, not {bits}"
+        ))),
+    }
+}

@@ -1,0 +1,107 @@
+//! Output files written atomically: into a temporary file beside the target, renamed on
+//! success and removed on failure, so an error never leaves a partial or clobbered file.
+
+use crate::CliError;
+use std::fs::File;
+use std::io::{self, BufWriter, Write};
+use std::path::{Path, PathBuf};
+
+/// Where output goes: a file (atomic) or standard output.
+pub enum Sink {
+    File {
+        tmp: PathBuf,
+        target: PathBuf,
+        writer: BufWriter<File>,
+    },
+    Stdout(BufWriter<io::Stdout>),
+}
+
+impl Sink {
+    /// Opens `path`, or standard output when `None` or `-`.
+    pub fn open(path: Option<&Path>) -> Result<Sink, CliError> {
+        match path {
+            None => Ok(Sink::Stdout(BufWriter::new(io::stdout()))),
+            Some(p) if p.as_os_str() == "-" => Ok(Sink::Stdout(BufWriter::new(io::stdout()))),
+            Some(p) => {
+                let name = p.file_name().ok_or_else(|| {
+                    CliError::Usage(format!("{} is not a file path", p.display()))
+                })?;
+                let mut tmp_name = std::ffi::OsString::from(".");
+                tmp_name.push(name);
+                tmp_name.push(format!(".tmp-{}", std::process::id()));
+                let tmp = p.with_file_name(tmp_name);
+                let file = File::create(&tmp)
+                    .map_err(|e| CliError::Io(format!("cannot create {}: {e}", p.display())))?;
+                Ok(Sink::File {
+                    tmp,
+                    target: p.to_path_buf(),
+                    writer: BufWriter::new(file),
+                })
+            }
+        }
+    }
+
+    /// The writer to write into.
+    pub fn writer(&mut self) -> &mut dyn Write {
+        match self {
+            Sink::File { writer, .. } => writer,
+            Sink::Stdout(w) => w,
+        }
+    }
+
+    /// Flushes and, for files, renames the temporary file onto the target.
+    pub fn commit(self) -> Result<(), CliError> {
+        match self {
+            Sink::Stdout(mut w) => w
+                .flush()
+                .map_err(|e| CliError::Io(format!("cannot write to standard output: {e}"))),
+            Sink::File {
+                tmp,
+                target,
+                writer,
+            } => {
+                let result = writer
+                    .into_inner()
+                    .map_err(|e| e.into_error())
+                    .and_then(|f| f.sync_all())
+                    .and_then(|_| std::fs::rename(&tmp, &target));
+                if let Err(e) = result {
+                    let _ = std::fs::remove_file(&tmp);
+                    return Err(CliError::Io(format!(
+                        "cannot write {}: {e}",
+                        target.display()
+                    )));
+                }
+                Ok(())
+            }
+        }
+    }
+
+    /// Discards the output (removes the temporary file).
+    pub fn abort(self) {
+        if let Sink::File { tmp, writer, .. } = self {
+            drop(writer);
+            let _ = std::fs::remove_file(tmp);
+        }
+    }
+}
+
+/// Runs `body` against a sink, committing on success and aborting on error.
+pub fn write_atomically(
+    path: Option<&Path>,
+    body: impl FnOnce(&mut dyn Write) -> Result<(), CliError>,
+) -> Result<(), CliError> {
+    let mut sink = Sink::open(path)?;
+    match body(sink.writer()) {
+        Ok(()) => sink.commit(),
+        Err(e) => {
+            sink.abort();
+            Err(e)
+        }
+    }
+}
+
+/// Converts an I/O error while writing into a CLI error.
+pub fn io_err(e: io::Error) -> CliError {
+    CliError::Io(format!("write failed: {e}"))
+}

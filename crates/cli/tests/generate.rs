@@ -1,0 +1,192 @@
+//! End-to-end tests of `gartowen generate`, `matrices` and `list`.
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn gartowen(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_gartowen"))
+        .args(args)
+        .output()
+        .expect("binary runs")
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8(o.stdout.clone()).unwrap()
+}
+
+#[test]
+fn hex_output_is_the_sequence_in_natural_order() {
+    let o = gartowen(&[
+        "generate", "--seq", "sobol", "--dims", "2", "--n", "4", "--start", "1",
+    ]);
+    assert!(o.status.success());
+    // Indices 1..=4: van der Corput in dimension 0, the binary Pascal matrix in dimension 1.
+    assert_eq!(
+        stdout(&o),
+        "80000000 80000000\n40000000 c0000000\nc0000000 40000000\n20000000 a0000000\n"
+    );
+}
+
+#[test]
+fn gray_order_reproduces_scipy_rows() {
+    // Rows 0..4 of scipy.stats.qmc.Sobol(2, scramble=False).random(4) are 0, .5, .75/.25, .25/.75.
+    let o = gartowen(&[
+        "generate", "--seq", "sobol", "--dims", "2", "--n", "4", "--order", "gray", "--format",
+        "csv",
+    ]);
+    assert_eq!(stdout(&o), "0.0,0.0\n0.5,0.5\n0.75,0.25\n0.25,0.75\n");
+}
+
+#[test]
+fn npy_words_and_values_agree() {
+    let dir = tempfile::tempdir().unwrap();
+    let words = dir.path().join("w.npy");
+    let values = dir.path().join("v.npy");
+    for (path, extra) in [(&words, vec!["--words"]), (&values, vec![])] {
+        let mut args = vec![
+            "generate",
+            "--seq",
+            "sz16",
+            "--dims",
+            "16",
+            "--log2-n",
+            "8",
+            "--format",
+            "npy",
+            "-o",
+            path.to_str().unwrap(),
+        ];
+        args.extend(extra);
+        assert!(gartowen(&args).status.success());
+    }
+    let bytes = std::fs::read(&words).unwrap();
+    let w = npyz::NpyFile::new(bytes.as_slice()).unwrap();
+    assert_eq!(w.shape(), &[256, 16]);
+    let w: Vec<u32> = w.into_vec().unwrap();
+    let v: Vec<f64> = npyz::NpyFile::new(std::fs::read(&values).unwrap().as_slice())
+        .unwrap()
+        .into_vec()
+        .unwrap();
+    for (x, y) in w.iter().zip(&v) {
+        assert_eq!(*x as f64 / 4294967296.0, *y);
+    }
+}
+
+#[test]
+fn bad_arguments_exit_2_and_leave_no_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out.npy");
+    let cases: &[&[&str]] = &[
+        &["--seq", "sobol", "--dims", "0", "--n", "4"],
+        &["--seq", "sobol", "--dims", "21202", "--n", "4"],
+        &["--seq", "sz4", "--dims", "5", "--n", "4"],
+        &["--seq", "halton", "--dims", "2", "--n", "4"],
+        &["--seq", "sobol", "--dims", "2", "--n", "0"],
+        &["--seq", "sobol", "--dims", "2", "--log2-n", "33"],
+        &[
+            "--seq",
+            "sobol",
+            "--dims",
+            "2",
+            "--n",
+            "2",
+            "--start",
+            "4294967295",
+        ],
+        &["--seq", "sobol", "--dims", "2", "--n", "4", "--bits", "16"],
+        &[
+            "--seq",
+            "sobol",
+            "--dims",
+            "2",
+            "--n",
+            "4",
+            "--scramble",
+            "nope",
+        ],
+        &["--seq", "sobol", "--dims", "2"],
+    ];
+    for case in cases {
+        let mut args = vec!["generate"];
+        args.extend_from_slice(case);
+        args.extend_from_slice(&["-o", out.to_str().unwrap()]);
+        let o = gartowen(&args);
+        assert_eq!(o.status.code(), Some(2), "{case:?}");
+        assert!(
+            !String::from_utf8_lossy(&o.stderr).contains("panicked"),
+            "{case:?}"
+        );
+        assert!(!o.stderr.is_empty(), "{case:?}");
+        assert!(!out.exists(), "{case:?} left a file");
+        assert_eq!(
+            std::fs::read_dir(dir.path()).unwrap().count(),
+            0,
+            "{case:?} left a temp file"
+        );
+    }
+}
+
+#[test]
+fn a_failed_run_keeps_the_previous_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("keep.csv");
+    std::fs::write(&out, "precious\n").unwrap();
+    let o = gartowen(&[
+        "generate",
+        "--seq",
+        "sobol",
+        "--dims",
+        "0",
+        "--n",
+        "4",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert_eq!(std::fs::read_to_string(&out).unwrap(), "precious\n");
+}
+
+#[test]
+fn matrices_hex_and_json_carry_the_same_columns() {
+    let hex = stdout(&gartowen(&["matrices", "--seq", "sz4", "--dims", "4"]));
+    let lines: Vec<&str> = hex.lines().collect();
+    assert_eq!(lines.len(), 4);
+    assert!(lines[2].starts_with("80000000 40000000 60000000 d0000000"));
+    let json: serde_json::Value = serde_json::from_str(&stdout(&gartowen(&[
+        "matrices", "--seq", "sz4", "--dims", "4", "--format", "json",
+    ])))
+    .unwrap();
+    for (j, line) in lines.iter().enumerate() {
+        let cols: Vec<String> = json["dims"][j]["columns"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|c| c.as_str().unwrap().to_string())
+            .collect();
+        assert_eq!(cols.join(" "), *line);
+    }
+    assert_eq!(json["base"], 4);
+}
+
+#[test]
+fn list_names_every_registry_entry() {
+    let json: serde_json::Value =
+        serde_json::from_str(&stdout(&gartowen(&["list", "--json"]))).unwrap();
+    let names: Vec<&str> = json
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|e| e["name"].as_str().unwrap())
+        .collect();
+    let registry = gartowen::registry();
+    let expected: Vec<&str> = registry.specs().iter().map(|s| s.name).collect();
+    assert_eq!(names, expected);
+}
+
+#[test]
+fn help_explains_the_conventions() {
+    let o = gartowen(&["generate", "--help"]);
+    let text = stdout(&o);
+    assert!(text.contains("--log2-n") && text.contains("scipy"));
+    assert!(Path::new(env!("CARGO_BIN_EXE_gartowen")).exists());
+}

@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Runs every test of gartowen: unit, property, integration, CLI end-to-end, doctests and the
+# exhaustive 2^32-word float test (all in the test profile, opt-level 2), then the Coq proofs
+# when proofs/ has theories. Exits non-zero on the first failure.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+cargo test --workspace --no-fail-fast
+
+if [ -x proofs/check.sh ]; then
+  proofs/check.sh
+fi
