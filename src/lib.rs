@@ -3,6 +3,7 @@
 //! This facade re-exports the workspace crates and assembles the one scrambler [`registry`].
 
 pub use gartowen_core as core;
+pub use gartowen_netcheck as netcheck;
 pub use gartowen_oracles as oracles;
 pub use gartowen_seq as seq;
 

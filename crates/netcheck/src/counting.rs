@@ -1,0 +1,571 @@
+//! The counting path: per shape, every point's box key from its top digits, histogrammed.
+//!
+//! Digit prefixes are computed once per query: P_j[i] = floor(x_ij · b^K) at the deepest level
+//! K the query needs; a shape's digit a_j = floor(x_ij · b^(d_j)) is then P_j[i] / b^(K − d_j)
+//! (a shift for b = 2^q). A box must hold exactly b^t points. Since the total is b^K · b^t,
+//! no box can hold fewer unless another holds more, so only overflow is searched for.
+
+use crate::shapes::shapes;
+use crate::{CheckBase, NetError, PointSet};
+use rayon::prelude::*;
+use serde::Serialize;
+use std::collections::BTreeMap;
+
+/// The first box (in shape order, then point order) holding more than b^t points.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct BoxFailure {
+    /// The shape (d_1..d_s): box side b^-d_j in dimension j.
+    pub shape: Vec<u32>,
+    /// The box: in dimension j it is [a_j·b^-d_j, (a_j+1)·b^-d_j).
+    pub box_index: Vec<u64>,
+    /// Points in that box.
+    pub count: u64,
+    /// Points every box must hold, b^t.
+    pub expected: u64,
+}
+
+/// The verdict of a (t,m,s)-net check.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct NetReport {
+    /// Base b.
+    pub base: u64,
+    /// m (N = b^m).
+    pub m: u32,
+    /// t checked.
+    pub t: u32,
+    /// Dimensions s.
+    pub dims: usize,
+    /// Whether every box of every shape holds b^t points.
+    pub holds: bool,
+    /// Shapes examined (all of them when the net holds).
+    pub shapes_checked: u64,
+    /// The first failing shape and box.
+    pub first_failure: Option<BoxFailure>,
+}
+
+/// How many boxes of a shape hold each count.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct ShapeHistogram {
+    /// The shape.
+    pub shape: Vec<u32>,
+    /// count → number of boxes holding exactly that many points (boxes with 0 included).
+    pub boxes_by_count: BTreeMap<u64, u64>,
+}
+
+/// A (t,s)-sequence failure: which block of b^m consecutive points failed, and how.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct SequenceFailure {
+    /// The block size exponent: the block holds b^m points.
+    pub m: u32,
+    /// The block number k: points [k·b^m, (k+1)·b^m).
+    pub block: u64,
+    /// The failing shape and box within that block.
+    pub failure: BoxFailure,
+}
+
+/// The verdict of a (t,s)-sequence check over every block of b^k points, t ≤ k ≤ max_m.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct SequenceReport {
+    /// Base b.
+    pub base: u64,
+    /// t checked.
+    pub t: u32,
+    /// Largest block exponent checked.
+    pub max_m: u32,
+    /// Dimensions s.
+    pub dims: usize,
+    /// Whether every block is a (t,k,s)-net.
+    pub holds: bool,
+    /// Blocks examined over all k.
+    pub blocks_checked: u64,
+    /// (block, shape) pairs examined.
+    pub shapes_checked: u64,
+    /// The first failure in (k, block, shape) order.
+    pub first_failure: Option<SequenceFailure>,
+}
+
+/// Reports progress in units of shapes checked; called from many threads.
+pub type Progress<'a> = &'a (dyn Fn(u64) + Sync);
+
+fn no_progress(_: u64) {}
+
+/// Digit prefixes floor(x·b^K) of points `range` in every dimension.
+/// Values are below b^k ≤ N ≤ 2^32, so they fit u32 (validated by the callers).
+fn prefixes(points: &PointSet, base: CheckBase, k: u32, range: std::ops::Range<usize>) -> Vec<Vec<u32>> {
+    let w = points.width().bits();
+    (0..points.dims())
+        .into_par_iter()
+        .map(|j| {
+            points.column(j)[range.clone()]
+                .iter()
+                .map(|&x| base.top_digits(x, w, k) as u32)
+                .collect()
+        })
+        .collect()
+}
+
+/// Borrowed per-dimension views of owned prefix arrays.
+fn views(prefix: &[Vec<u32>]) -> Vec<&[u32]> {
+    prefix.iter().map(|p| p.as_slice()).collect()
+}
+
+/// Per active dimension: its prefix slice, how to cut its digit, and where it goes in the key.
+struct KeyPart<'a> {
+    prefix: &'a [u32],
+    /// b^(K − d_j), or the shift q(K − d_j) for b = 2^q.
+    cut: u32,
+    /// Π_{i>j} b^(d_i), or the shift q·Σ_{i>j} d_i.
+    place: u32,
+}
+
+/// The box-key function of a shape over prefixes floor(x·b^depth) (depth ≥ every d_j).
+fn key_parts<'a>(prefix: &[&'a [u32]], base: CheckBase, depth: u32, shape: &[u32]) -> Vec<KeyPart<'a>> {
+    let mut parts = Vec::new();
+    let mut place_exp = 0u32;
+    for j in (0..shape.len()).rev() {
+        let d = shape[j];
+        if d == 0 {
+            continue;
+        }
+        let (cut, place) = match base.log2() {
+            Some(q) => (q * (depth - d), q * place_exp),
+            None => (base.pow(depth - d).unwrap() as u32, base.pow(place_exp).unwrap() as u32),
+        };
+        parts.push(KeyPart {
+            prefix: prefix[j],
+            cut,
+            place,
+        });
+        place_exp += d;
+    }
+    parts
+}
+
+/// Points per chunk of box keys: small enough for L1, large enough to vectorize.
+const CHUNK: usize = 2048;
+
+/// Box keys of points `start..start + keys.len()`, computed part by part (vectorizable).
+#[inline]
+fn keys_of(parts: &[KeyPart], pow2: bool, start: usize, keys: &mut [u32]) {
+    keys.fill(0);
+    let end = start + keys.len();
+    for p in parts {
+        let src = &p.prefix[start..end];
+        if pow2 {
+            let (cut, place) = (p.cut, p.place);
+            for (k, &x) in keys.iter_mut().zip(src) {
+                *k |= (x >> cut) << place;
+            }
+        } else {
+            for (k, &x) in keys.iter_mut().zip(src) {
+                *k += (x / p.cut) * p.place;
+            }
+        }
+    }
+}
+
+/// The key of one point (slow path, for reporting).
+fn key_at(parts: &[KeyPart], pow2: bool, i: usize) -> u32 {
+    let mut key = [0u32];
+    keys_of(parts, pow2, i, &mut key);
+    key[0]
+}
+
+/// Decodes a key into the per-dimension box index.
+fn decode_key(key: u32, base: CheckBase, shape: &[u32]) -> Vec<u64> {
+    let mut rest = key as u64;
+    let mut index = vec![0u64; shape.len()];
+    for j in (0..shape.len()).rev() {
+        let side = base.pow(shape[j]).unwrap();
+        index[j] = rest % side;
+        rest /= side;
+    }
+    index
+}
+
+/// Checks one shape over the first `n` points; returns the first overflowing box.
+/// `prefix` holds floor(x·b^depth); the shape has Σd = k ≤ depth.
+#[allow(clippy::too_many_arguments)]
+fn check_shape(
+    prefix: &[&[u32]],
+    depth: u32,
+    n: usize,
+    base: CheckBase,
+    k: u32,
+    t_count: u64,
+    shape: &[u32],
+    scratch: &mut Vec<u32>,
+) -> Option<BoxFailure> {
+    let parts = key_parts(prefix, base, depth, shape);
+    let pow2 = base.log2().is_some();
+    let cells = base.pow(k).unwrap() as usize;
+    let mut keys = [0u32; CHUNK];
+    let mut bad_key = None;
+    if t_count == 1 {
+        // Each box holds exactly one point: a bitset collision is the first failure. Collisions
+        // are OR-ed per chunk (no branch per point); a hit chunk is rescanned to find the key.
+        scratch.clear();
+        scratch.resize(cells.div_ceil(32), 0);
+        let mut fresh = [false; CHUNK];
+        'chunks: for start in (0..n).step_by(CHUNK) {
+            let keys = &mut keys[..CHUNK.min(n - start)];
+            keys_of(&parts, pow2, start, keys);
+            let mut hit = 0u32;
+            for (&key, fresh) in keys.iter().zip(fresh.iter_mut()) {
+                let word = &mut scratch[(key >> 5) as usize];
+                let bit = 1u32 << (key & 31);
+                let was = *word & bit;
+                hit |= was;
+                *fresh = was == 0;
+                *word |= bit;
+            }
+            if hit != 0 {
+                // Undo only the bits this chunk set (earlier chunks' bits are the evidence),
+                // then replay it point by point to find the first collision.
+                for (&key, &fresh) in keys.iter().zip(fresh.iter()) {
+                    if fresh {
+                        scratch[(key >> 5) as usize] &= !(1u32 << (key & 31));
+                    }
+                }
+                for &key in keys.iter() {
+                    let word = &mut scratch[(key >> 5) as usize];
+                    let bit = 1u32 << (key & 31);
+                    if *word & bit != 0 {
+                        bad_key = Some(key);
+                        break 'chunks;
+                    }
+                    *word |= bit;
+                }
+            }
+        }
+    } else if t_count < u8::MAX as u64 {
+        // Byte counters keep the histogram 4× smaller than u32 (cache-resident longer).
+        let counts = scratch_bytes(scratch, cells);
+        'chunks8: for start in (0..n).step_by(CHUNK) {
+            let keys = &mut keys[..CHUNK.min(n - start)];
+            keys_of(&parts, pow2, start, keys);
+            for &key in keys.iter() {
+                let c = &mut counts[key as usize];
+                *c += 1;
+                if *c as u64 > t_count {
+                    bad_key = Some(key);
+                    break 'chunks8;
+                }
+            }
+        }
+    } else {
+        scratch.clear();
+        scratch.resize(cells, 0);
+        'chunks32: for start in (0..n).step_by(CHUNK) {
+            let keys = &mut keys[..CHUNK.min(n - start)];
+            keys_of(&parts, pow2, start, keys);
+            for &key in keys.iter() {
+                let c = &mut scratch[key as usize];
+                *c += 1;
+                if *c as u64 > t_count {
+                    bad_key = Some(key);
+                    break 'chunks32;
+                }
+            }
+        }
+    }
+    let key = bad_key?;
+    let count = (0..prefix[0].len()).filter(|&i| key_at(&parts, pow2, i) == key).count() as u64;
+    Some(BoxFailure {
+        shape: shape.to_vec(),
+        box_index: decode_key(key, base, shape),
+        count,
+        expected: t_count,
+    })
+}
+
+/// `cells` zeroed byte counters carved out of the u32 scratch buffer.
+fn scratch_bytes(scratch: &mut Vec<u32>, cells: usize) -> &mut [u8] {
+    scratch.clear();
+    scratch.resize(cells.div_ceil(4), 0);
+    let bytes: &mut [u8] = bytemuck_u32_as_u8(scratch);
+    &mut bytes[..cells]
+}
+
+/// Views a u32 slice as bytes (u8 has no alignment or validity requirements).
+fn bytemuck_u32_as_u8(words: &mut [u32]) -> &mut [u8] {
+    let len = words.len() * 4;
+    // SAFETY: u32 memory is valid u8 memory of 4× the length; the borrow is exclusive.
+    unsafe { std::slice::from_raw_parts_mut(words.as_mut_ptr() as *mut u8, len) }
+}
+
+/// Validates (N, m, t) and returns b^t.
+fn validate(points: &PointSet, base: CheckBase, m: u32, t: u32) -> Result<u64, NetError> {
+    if points.len() as u64 > 1 << 32 {
+        return Err(NetError::BadShape(format!("{} points is more than the checker's 2^32", points.len())));
+    }
+    if t > m {
+        return Err(NetError::TooLargeT { t, m });
+    }
+    match base.pow(m) {
+        Some(p) if p == points.len() as u64 => Ok(base.pow(t).unwrap()),
+        _ => Err(NetError::WrongCount {
+            n: points.len(),
+            base: base.get(),
+            m,
+        }),
+    }
+}
+
+/// The m with N = b^m for this set, or an error naming N.
+pub fn implied_m(points: &PointSet, base: CheckBase) -> Result<u32, NetError> {
+    base.exact_log(points.len()).ok_or(NetError::NotAPowerOfBase {
+        n: points.len(),
+        base: base.get(),
+    })
+}
+
+/// Whether the b^m points form a (t,m,s)-net in base b; stops at the first failing shape.
+///
+/// ```
+/// use gartowen_core::Width;
+/// use gartowen_netcheck::{counting::check_net, CheckBase, PointSet};
+/// // The 4-point (0,2,2)-net in base 2: {(0,0), (1/2,1/2), (1/4,3/4), (3/4,1/4)}.
+/// let rows = vec![vec![0, 0], vec![128, 128], vec![64, 192], vec![192, 64]];
+/// let p = PointSet::from_rows(Width::new(8).unwrap(), &rows).unwrap();
+/// assert!(check_net(&p, CheckBase::new(2).unwrap(), 2, 0).unwrap().holds);
+/// ```
+pub fn check_net(points: &PointSet, base: CheckBase, m: u32, t: u32) -> Result<NetReport, NetError> {
+    check_net_with_progress(points, base, m, t, &no_progress)
+}
+
+/// [`check_net`] with a progress callback (called with the number of shapes finished).
+pub fn check_net_with_progress(
+    points: &PointSet,
+    base: CheckBase,
+    m: u32,
+    t: u32,
+    progress: Progress,
+) -> Result<NetReport, NetError> {
+    validate(points, base, m, t)?;
+    let prefix = prefixes(points, base, m - t, 0..points.len());
+    check_level(points, &views(&prefix), m - t, base, m, t, progress, Search::First)
+}
+
+/// Which failure a level check reports.
+#[derive(Clone, Copy)]
+enum Search {
+    /// The first failing shape in lexicographic order (deterministic reports).
+    First,
+    /// Any failing shape (enough to reject a t; stops soonest).
+    Any,
+}
+
+/// Checks every shape with Σd = m − t over prefixes at `depth` ≥ m − t.
+#[allow(clippy::too_many_arguments)]
+fn check_level(
+    points: &PointSet,
+    prefix: &[&[u32]],
+    depth: u32,
+    base: CheckBase,
+    m: u32,
+    t: u32,
+    progress: Progress,
+    search: Search,
+) -> Result<NetReport, NetError> {
+    let k = m - t;
+    let t_count = base.pow(t).unwrap();
+    let shape_list = shapes(k, points.dims())?;
+    if let Search::Any = search {
+        // Sound quick rejection: counts only grow with more points, so a box that overflows
+        // among the first n/64 points overflows in the whole set.
+        let probe = points.len() / 64;
+        if probe >= 64 {
+            let hit = shape_list.par_iter().map_init(Vec::new, |scratch, shape| {
+                check_shape(prefix, depth, probe, base, k, t_count, shape, scratch)
+            });
+            if let Some(f) = hit.find_any(|r| r.is_some()).flatten() {
+                return Ok(NetReport {
+                    base: base.get(),
+                    m,
+                    t,
+                    dims: points.dims(),
+                    holds: false,
+                    shapes_checked: shape_list.iter().position(|s| *s == f.shape).unwrap() as u64 + 1,
+                    first_failure: Some(f),
+                });
+            }
+        }
+    }
+    let per_shape = shape_list.par_iter().map_init(Vec::new, |scratch, shape| {
+        let r = check_shape(prefix, depth, points.len(), base, k, t_count, shape, scratch);
+        progress(1);
+        r
+    });
+    let failure = match search {
+        Search::First => per_shape.find_first(|r| r.is_some()).flatten(),
+        Search::Any => per_shape.find_any(|r| r.is_some()).flatten(),
+    };
+    // Shapes checked is reported deterministically: all of them when the net holds, and the
+    // failing shape's position + 1 otherwise (parallel workers may have looked further).
+    let shapes_checked = match &failure {
+        None => shape_list.len() as u64,
+        Some(f) => shape_list.iter().position(|s| *s == f.shape).unwrap() as u64 + 1,
+    };
+    Ok(NetReport {
+        base: base.get(),
+        m,
+        t,
+        dims: points.dims(),
+        holds: failure.is_none(),
+        shapes_checked,
+        first_failure: failure,
+    })
+}
+
+/// The t-value of a b^m-point set: the least t for which it is a (t,m,s)-net.
+///
+/// Levels below the answer are rejected by any failing shape, so only the passing level is
+/// checked in full. [`t_value_with_witness`] also reports the first failure at t − 1.
+pub fn t_value(points: &PointSet, base: CheckBase, m: u32) -> Result<u32, NetError> {
+    validate(points, base, m, 0)?;
+    // Digit prefixes at depth m serve every t.
+    let prefix = prefixes(points, base, m, 0..points.len());
+    let views = views(&prefix);
+    for t in 0..=m {
+        if check_level(points, &views, m, base, m, t, &no_progress, Search::Any)?.holds {
+            return Ok(t);
+        }
+    }
+    unreachable!("t = m always holds: one box holds all b^m points")
+}
+
+/// The t-value and, when t > 0, the (t−1, m, s) check's report with its first failing shape
+/// and box: the witness that t is least.
+pub fn t_value_with_witness(
+    points: &PointSet,
+    base: CheckBase,
+    m: u32,
+) -> Result<(u32, Option<NetReport>), NetError> {
+    let t = t_value(points, base, m)?;
+    let witness = if t > 0 { Some(check_net(points, base, m, t - 1)?) } else { None };
+    Ok((t, witness))
+}
+
+/// Count histograms of every shape with Σd = m − t.
+pub fn histograms(points: &PointSet, base: CheckBase, m: u32, t: u32) -> Result<Vec<ShapeHistogram>, NetError> {
+    validate(points, base, m, t)?;
+    let k = m - t;
+    let shape_list = shapes(k, points.dims())?;
+    let prefix = prefixes(points, base, k, 0..points.len());
+    let views = views(&prefix);
+    let pow2 = base.log2().is_some();
+    let cells = base.pow(k).unwrap() as usize;
+    Ok(shape_list
+        .par_iter()
+        .map(|shape| {
+            let parts = key_parts(&views, base, k, shape);
+            let mut counts = vec![0u64; cells];
+            let mut keys = [0u32; CHUNK];
+            for start in (0..points.len()).step_by(CHUNK) {
+                let keys = &mut keys[..CHUNK.min(points.len() - start)];
+                keys_of(&parts, pow2, start, keys);
+                for &key in keys.iter() {
+                    counts[key as usize] += 1;
+                }
+            }
+            let mut boxes_by_count = BTreeMap::new();
+            for c in counts {
+                *boxes_by_count.entry(c).or_insert(0) += 1;
+            }
+            ShapeHistogram {
+                shape: shape.clone(),
+                boxes_by_count,
+            }
+        })
+        .collect())
+}
+
+/// The (t,s)-sequence check: every block of b^k consecutive points, t ≤ k ≤ max_m (blocks that
+/// fit in N), is a (t,k,s)-net.
+pub fn check_sequence(points: &PointSet, base: CheckBase, t: u32, max_m: u32) -> Result<SequenceReport, NetError> {
+    check_sequence_with_progress(points, base, t, max_m, &no_progress)
+}
+
+/// [`check_sequence`] with a progress callback (units: block-shapes finished).
+pub fn check_sequence_with_progress(
+    points: &PointSet,
+    base: CheckBase,
+    t: u32,
+    max_m: u32,
+    progress: Progress,
+) -> Result<SequenceReport, NetError> {
+    if t > max_m {
+        return Err(NetError::TooLargeT { t, m: max_m });
+    }
+    let n = points.len();
+    let mut blocks_checked = 0u64;
+    let mut shapes_checked = 0u64;
+    for m in t..=max_m {
+        let size = match base.pow(m) {
+            Some(p) if p <= n as u64 => p as usize,
+            _ => {
+                return Err(NetError::WrongCount {
+                    n,
+                    base: base.get(),
+                    m: max_m,
+                })
+            }
+        };
+        let blocks = n / size;
+        let t_count = base.pow(t).unwrap();
+        let k = m - t;
+        let shape_list = shapes(k, points.dims())?;
+        let prefix = prefixes(points, base, k, 0..blocks * size);
+        let tasks = blocks * shape_list.len();
+        let failure = (0..tasks)
+            .into_par_iter()
+            .map_init(Vec::new, |scratch, task| {
+                let (block, s) = (task / shape_list.len(), task % shape_list.len());
+                let slice: Vec<&[u32]> = prefix
+                    .iter()
+                    .map(|p| &p[block * size..(block + 1) * size])
+                    .collect();
+                let r = check_shape(&slice, k, size, base, k, t_count, &shape_list[s], scratch);
+                progress(1);
+                r.map(|f| (block, f))
+            })
+            .find_first(|r| r.is_some())
+            .flatten();
+        match failure {
+            None => {
+                blocks_checked += blocks as u64;
+                shapes_checked += tasks as u64;
+            }
+            Some((block, f)) => {
+                let pos = block * shape_list.len() + shape_list.iter().position(|s| *s == f.shape).unwrap();
+                blocks_checked += block as u64 + 1;
+                shapes_checked += pos as u64 + 1;
+                return Ok(SequenceReport {
+                    base: base.get(),
+                    t,
+                    max_m,
+                    dims: points.dims(),
+                    holds: false,
+                    blocks_checked,
+                    shapes_checked,
+                    first_failure: Some(SequenceFailure {
+                        m,
+                        block: block as u64,
+                        failure: f,
+                    }),
+                });
+            }
+        }
+    }
+    Ok(SequenceReport {
+        base: base.get(),
+        t,
+        max_m,
+        dims: points.dims(),
+        holds: true,
+        blocks_checked,
+        shapes_checked,
+        first_failure: None,
+    })
+}

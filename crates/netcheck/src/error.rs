@@ -1,0 +1,68 @@
+//! The checker's typed error.
+
+use std::fmt;
+
+/// Errors from checker inputs; each names the offending value.
+#[derive(Debug, Clone, PartialEq)]
+pub enum NetError {
+    /// Base below 2.
+    BaseTooSmall(u64),
+    /// A base that must be 2^q (rank path) but is not.
+    NotPowerOfTwo(u64),
+    /// The point count is not b^m for the requested or implied m.
+    NotAPowerOfBase { n: usize, base: u64 },
+    /// N ≠ b^m for an explicit m.
+    WrongCount { n: usize, base: u64, m: u32 },
+    /// t > m.
+    TooLargeT { t: u32, m: u32 },
+    /// No points.
+    Empty,
+    /// Zero dimensions, or rows of differing length.
+    BadShape(String),
+    /// A coordinate that is NaN, outside [0,1) or not an exact dyadic; names point and dimension.
+    BadValue { point: usize, dim: usize, reason: String },
+    /// A dimension index past the point set's dimensions.
+    NoSuchDimension { dim: usize, dims: usize },
+    /// Too many shapes to enumerate.
+    TooManyShapes { shapes: u128, limit: u128 },
+    /// Generator matrices too large for the rank path (more than 64 columns or rows used).
+    TooManyBits { bits: u32 },
+    /// A projection list that could not be parsed.
+    BadProjection(String),
+}
+
+impl fmt::Display for NetError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            NetError::BaseTooSmall(b) => write!(f, "base {b} is below 2"),
+            NetError::NotPowerOfTwo(b) => {
+                write!(f, "base {b} is not 2^q with q in 1..=8, which the rank path needs")
+            }
+            NetError::NotAPowerOfBase { n, base } => {
+                write!(f, "{n} points is not a power of the base {base}; give --m or use b^m points")
+            }
+            NetError::WrongCount { n, base, m } => {
+                write!(f, "{n} points, but a net with base {base} and m = {m} has {base}^{m} points")
+            }
+            NetError::TooLargeT { t, m } => write!(f, "t = {t} is larger than m = {m}"),
+            NetError::Empty => write!(f, "the point set is empty"),
+            NetError::BadShape(s) => write!(f, "{s}"),
+            NetError::BadValue { point, dim, reason } => {
+                write!(f, "point {point}, dimension {dim}: {reason}")
+            }
+            NetError::NoSuchDimension { dim, dims } => {
+                write!(f, "dimension {dim} does not exist (the set has {dims})")
+            }
+            NetError::TooManyShapes { shapes, limit } => write!(
+                f,
+                "{shapes} shapes to check exceeds the limit {limit}; check projections instead"
+            ),
+            NetError::TooManyBits { bits } => {
+                write!(f, "the rank path handles at most 64 index bits, {bits} requested")
+            }
+            NetError::BadProjection(s) => write!(f, "bad projection list: {s}"),
+        }
+    }
+}
+
+impl std::error::Error for NetError {}

@@ -1,0 +1,204 @@
+//! The counting path, the rank path and the brute-force oracle decide the same facts.
+
+use gartowen_core::{SplitMix64, Width};
+use gartowen_netcheck::counting::{check_net, check_sequence, t_value};
+use gartowen_netcheck::rank::{self, RowMatrices};
+use gartowen_netcheck::{CheckBase, PointSet, ProjectionSpec};
+use gartowen_oracles::box_counting;
+use gartowen_seq::{sobol, sz, DigitalSequence};
+use gartowen_core::PowerOfTwoBase;
+use proptest::prelude::*;
+
+/// The first n points (natural order) of the given dimensions, as a point set.
+fn points(seq: &DigitalSequence, dims: &[usize], n: u64) -> PointSet {
+    let cols = dims
+        .iter()
+        .map(|&j| (0..n).map(|i| seq.point(i, j)).collect())
+        .collect();
+    PointSet::from_columns(seq.width(), cols).unwrap()
+}
+
+fn rows_of(p: &PointSet) -> Vec<Vec<u64>> {
+    (0..p.len()).map(|i| p.point(i)).collect()
+}
+
+fn random_sequence(seed: u64, dims: usize, width: Width) -> DigitalSequence {
+    let mut rng = SplitMix64::new(seed);
+    let cols: Vec<Vec<u64>> = (0..dims)
+        .map(|_| (0..width.bits()).map(|_| rng.next_u64() & width.mask()).collect())
+        .collect();
+    DigitalSequence::from_columns("random", width, PowerOfTwoBase::B2, &cols).unwrap()
+}
+
+#[test]
+fn sobol_pairs_of_the_first_32_dims_agree_for_m_1_to_20() {
+    // Counting over 2^m points versus rank of the generator matrices, all 496 pairs, m ≤ 20.
+    let seq = sobol::sequence(32, Width::W32).unwrap();
+    let base = CheckBase::new(2).unwrap();
+    let pairs = ProjectionSpec::Pairs.expand(32).unwrap();
+    let all_points = points(&seq, &(0..32).collect::<Vec<_>>(), 1 << 20);
+    let mut table = std::collections::BTreeMap::new();
+    for m in 1..=20u32 {
+        let prefix = all_points.prefix(1 << m);
+        for pair in &pairs {
+            let by_rank = rank::t_value(&seq, pair, 1, m).unwrap();
+            let by_count = t_value(&prefix.project(pair).unwrap(), base, m).unwrap();
+            assert_eq!(by_count, by_rank, "pair {pair:?} m {m}");
+            table.insert((pair[0], pair[1], m), by_rank);
+        }
+    }
+    // A sample frozen as a regression table (both paths agree on it above). Dimensions 0 and 1
+    // form a (0,2)-sequence; pairs with higher dimensions reach larger t.
+    for m in 1..=20 {
+        assert_eq!(table[&(0, 1, m)], 0);
+    }
+    let golden = [((0, 2, 20), 1), ((1, 2, 20), 1), ((2, 3, 12), 2), ((4, 7, 10), 1), ((30, 31, 20), 2)];
+    for (key, t) in golden {
+        assert_eq!(table[&key], t, "golden {key:?}");
+    }
+}
+
+#[test]
+fn counting_agrees_with_brute_force_on_tiny_sets() {
+    // Exhaustive over small m in bases 2, 3, 4 and 5 (non-power bases use exact u128 digits).
+    let mut rng = SplitMix64::new(11);
+    for b in [2u64, 3, 4, 5] {
+        for m in 1..=3u32 {
+            let n = b.pow(m) as usize;
+            if n > 125 {
+                continue;
+            }
+            for trial in 0..30 {
+                let w = 12u32;
+                let width = Width::new(w).unwrap();
+                let rows: Vec<Vec<u64>> = (0..n)
+                    .map(|_| (0..2).map(|_| rng.next_u64() & width.mask()).collect())
+                    .collect();
+                let p = PointSet::from_rows(width, &rows).unwrap();
+                let base = CheckBase::new(b).unwrap();
+                let t_fast = t_value(&p, base, m).unwrap();
+                assert_eq!(t_fast, box_counting::t_value(&rows, w, b, m), "b {b} m {m} trial {trial}");
+                for t in 0..=m {
+                    let fast = check_net(&p, base, m, t).unwrap();
+                    let brute = box_counting::first_failure(&rows, w, b, m, t);
+                    assert_eq!(fast.holds, brute.is_none());
+                    if let (Some(f), Some(bf)) = (&fast.first_failure, &brute) {
+                        assert_eq!(f.shape, bf.shape, "first failing shape");
+                        assert_eq!(
+                            f.count,
+                            box_counting::count_in_box(&rows, w, b, &f.shape, &f.box_index),
+                            "reported count of the reported box"
+                        );
+                        assert!(f.count > f.expected);
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn sz4_is_a_0_4_sequence_in_base_4_and_its_pairs_are_binary_0_2() {
+    let seq = sz::sz4(4, Width::W32).unwrap();
+    // Rank path to 24 index bits (m = 12 base-4 digits; binary m = 24).
+    assert_eq!(rank::sequence_t_value(&seq, &[0, 1, 2, 3], 2, 12).unwrap(), 0);
+    for pair in [[0, 1], [2, 3]] {
+        assert_eq!(rank::sequence_t_value(&seq, &pair, 1, 24).unwrap(), 0, "{pair:?}");
+    }
+    // Counting path: base 4 to m = 8 (65536 points), every block of every size.
+    let p = points(&seq, &[0, 1, 2, 3], 1 << 16);
+    let r = check_sequence(&p, CheckBase::new(4).unwrap(), 0, 8).unwrap();
+    assert!(r.holds, "{r:?}");
+    for pair in [[0, 1], [2, 3]] {
+        let r = check_sequence(&p.project(&pair).unwrap(), CheckBase::new(2).unwrap(), 0, 16).unwrap();
+        assert!(r.holds, "{pair:?}: {r:?}");
+    }
+}
+
+#[test]
+fn sz16_is_a_0_16_sequence_in_base_16_with_0_4_quads_and_binary_0_2_pairs() {
+    let seq = sz::sz16(16, Width::W32).unwrap();
+    let all: Vec<usize> = (0..16).collect();
+    assert_eq!(rank::sequence_t_value(&seq, &all, 4, 6).unwrap(), 0, "rank path, 24 index bits");
+    for quad in ProjectionSpec::Blocks(4).expand(16).unwrap() {
+        assert_eq!(rank::sequence_t_value(&seq, &quad, 2, 12).unwrap(), 0, "quad {quad:?}");
+    }
+    for pair in ProjectionSpec::Blocks(2).expand(16).unwrap() {
+        assert_eq!(rank::sequence_t_value(&seq, &pair, 1, 24).unwrap(), 0, "pair {pair:?}");
+    }
+    // Counting path: base 16 to m = 4 (65536 points, 3876 shapes per net at m = 4).
+    let p = points(&seq, &all, 1 << 16);
+    let r = check_net(&p, CheckBase::new(16).unwrap(), 4, 0).unwrap();
+    assert!(r.holds && r.shapes_checked == 3876, "{r:?}");
+    let r = check_sequence(&p.prefix(1 << 12), CheckBase::new(16).unwrap(), 0, 3).unwrap();
+    assert!(r.holds, "{r:?}");
+}
+
+#[test]
+fn cross_group_pair_0_2_is_not_binary_0_2_at_m_2() {
+    for seq in [sz::sz4(4, Width::W32).unwrap(), sz::sz16(4, Width::W32).unwrap()] {
+        assert!(rank::t_value(&seq, &[0, 2], 1, 2).unwrap() > 0);
+        let p = points(&seq, &[0, 2], 4);
+        let r = check_net(&p, CheckBase::new(2).unwrap(), 2, 0).unwrap();
+        assert!(!r.holds, "expected: cross-group pairs are not binary (0,2)");
+        assert_eq!(
+            Some(r.first_failure.unwrap().shape),
+            RowMatrices::new(&seq, &[0, 2], 1, 2).unwrap().first_failure(0).unwrap()
+        );
+    }
+}
+
+#[test]
+fn a_mutated_point_is_caught_with_the_failing_shape() {
+    let seq = sobol::sequence(2, Width::W32).unwrap();
+    let mut p = points(&seq, &[0, 1], 1 << 10);
+    assert!(check_net(&p, CheckBase::new(2).unwrap(), 10, 0).unwrap().holds);
+    // Move point 5 onto point 6's box in dimension 0 at full depth: shape (10, 0) collides.
+    let x6 = p.column(0)[6];
+    p.set(5, 0, x6 ^ 1);
+    let r = check_net(&p, CheckBase::new(2).unwrap(), 10, 0).unwrap();
+    assert!(!r.holds);
+    let rows = rows_of(&p);
+    let brute = box_counting::first_failure(&rows, 32, 2, 10, 0).unwrap();
+    let f = r.first_failure.unwrap();
+    assert_eq!(f.shape, brute.shape);
+    assert_eq!(f.count, 2);
+    assert_eq!(box_counting::count_in_box(&rows, 32, 2, &f.shape, &f.box_index), 2);
+}
+
+#[test]
+fn a_mutated_matrix_is_caught_by_both_paths_with_the_same_shape() {
+    let seq = sobol::sequence(2, Width::W32).unwrap();
+    let mut cols: Vec<Vec<u64>> = (0..2).map(|j| seq.columns(j).to_vec()).collect();
+    cols[1][3] = cols[1][2]; // two equal columns: dependent rows
+    let broken = DigitalSequence::from_columns("broken", Width::W32, PowerOfTwoBase::B2, &cols).unwrap();
+    let by_rank = RowMatrices::new(&broken, &[0, 1], 1, 6).unwrap().first_failure(0).unwrap();
+    let r = check_net(&points(&broken, &[0, 1], 64), CheckBase::new(2).unwrap(), 6, 0).unwrap();
+    assert!(by_rank.is_some() && !r.holds);
+    assert_eq!(Some(r.first_failure.unwrap().shape), by_rank);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+    #[test]
+    fn random_binary_matrices_both_paths_agree(seed in any::<u64>(), m in 1u32..=9, s in 2usize..=4) {
+        let seq = random_sequence(seed, s, Width::new(16).unwrap());
+        let dims: Vec<usize> = (0..s).collect();
+        let p = points(&seq, &dims, 1 << m);
+        let base = CheckBase::new(2).unwrap();
+        for t in 0..=m {
+            let fast = check_net(&p, base, m, t).unwrap();
+            let by_rank = RowMatrices::new(&seq, &dims, 1, m).unwrap().first_failure(t).unwrap();
+            prop_assert_eq!(fast.first_failure.map(|f| f.shape), by_rank);
+        }
+    }
+
+    #[test]
+    fn random_base_4_matrices_both_paths_agree(seed in any::<u64>(), m in 1u32..=4) {
+        let seq = random_sequence(seed, 3, Width::new(16).unwrap());
+        let p = points(&seq, &[0, 1, 2], 1 << (2 * m));
+        let base = CheckBase::new(4).unwrap();
+        let t_count = t_value(&p, base, m).unwrap();
+        prop_assert_eq!(t_count, rank::t_value(&seq, &[0, 1, 2], 2, m).unwrap());
+    }
+}
