@@ -22,7 +22,13 @@ pub fn in_interval(x: u64, width_bits: u32, b: u64, d: u32, a: u64) -> bool {
 }
 
 /// Number of points (rows) inside the box of `shape` with index `box_index`.
-pub fn count_in_box(rows: &[Vec<u64>], width_bits: u32, b: u64, shape: &[u32], box_index: &[u64]) -> u64 {
+pub fn count_in_box(
+    rows: &[Vec<u64>],
+    width_bits: u32,
+    b: u64,
+    shape: &[u32],
+    box_index: &[u64],
+) -> u64 {
     rows.iter()
         .filter(|p| {
             (0..shape.len()).all(|j| in_interval(p[j], width_bits, b, shape[j], box_index[j]))
@@ -66,7 +72,13 @@ fn boxes(b: u64, shape: &[u32]) -> Vec<Vec<u64>> {
 
 /// The first shape (lexicographic) with a box holding other than b^t points, with its first
 /// such box (lexicographic); `None` when the rows form a (t,m,s)-net.
-pub fn first_failure(rows: &[Vec<u64>], width_bits: u32, b: u64, m: u32, t: u32) -> Option<BruteFailure> {
+pub fn first_failure(
+    rows: &[Vec<u64>],
+    width_bits: u32,
+    b: u64,
+    m: u32,
+    t: u32,
+) -> Option<BruteFailure> {
     let s = rows[0].len();
     let expected = b.pow(t);
     for shape in compositions(m - t, s) {

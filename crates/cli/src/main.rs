@@ -2,6 +2,7 @@
 
 mod commands;
 mod error;
+mod input;
 mod output;
 
 use clap::{Parser, Subcommand};
@@ -22,6 +23,7 @@ struct Cli {
 #[derive(Subcommand)]
 enum Command {
     Generate(commands::generate::GenerateArgs),
+    Check(commands::check::CheckArgs),
     Matrices(commands::matrices::MatricesArgs),
     List(commands::list::ListArgs),
 }
@@ -30,6 +32,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Generate(a) => commands::generate::run(a),
+        Command::Check(a) => commands::check::run(a),
         Command::Matrices(a) => commands::matrices::run(a),
         Command::List(a) => commands::list::run(a),
     };

@@ -56,9 +56,12 @@ impl CheckBase {
         match self.log2 {
             Some(q) => {
                 let bits = q * k;
-                if bits <= width_bits {
+                if bits == 0 {
+                    0
+                } else if bits <= width_bits {
                     x >> (width_bits - bits)
                 } else {
+                    // Callers keep b^k ≤ 2^32, so this shift is below 64.
                     x << (bits - width_bits)
                 }
             }

@@ -91,7 +91,12 @@ fn no_progress(_: u64) {}
 
 /// Digit prefixes floor(x·b^K) of points `range` in every dimension.
 /// Values are below b^k ≤ N ≤ 2^32, so they fit u32 (validated by the callers).
-fn prefixes(points: &PointSet, base: CheckBase, k: u32, range: std::ops::Range<usize>) -> Vec<Vec<u32>> {
+fn prefixes(
+    points: &PointSet,
+    base: CheckBase,
+    k: u32,
+    range: std::ops::Range<usize>,
+) -> Vec<Vec<u32>> {
     let w = points.width().bits();
     (0..points.dims())
         .into_par_iter()
@@ -119,7 +124,12 @@ struct KeyPart<'a> {
 }
 
 /// The box-key function of a shape over prefixes floor(x·b^depth) (depth ≥ every d_j).
-fn key_parts<'a>(prefix: &[&'a [u32]], base: CheckBase, depth: u32, shape: &[u32]) -> Vec<KeyPart<'a>> {
+fn key_parts<'a>(
+    prefix: &[&'a [u32]],
+    base: CheckBase,
+    depth: u32,
+    shape: &[u32],
+) -> Vec<KeyPart<'a>> {
     let mut parts = Vec::new();
     let mut place_exp = 0u32;
     for j in (0..shape.len()).rev() {
@@ -129,7 +139,10 @@ fn key_parts<'a>(prefix: &[&'a [u32]], base: CheckBase, depth: u32, shape: &[u32
         }
         let (cut, place) = match base.log2() {
             Some(q) => (q * (depth - d), q * place_exp),
-            None => (base.pow(depth - d).unwrap() as u32, base.pow(place_exp).unwrap() as u32),
+            None => (
+                base.pow(depth - d).unwrap() as u32,
+                base.pow(place_exp).unwrap() as u32,
+            ),
         };
         parts.push(KeyPart {
             prefix: prefix[j],
@@ -270,7 +283,9 @@ fn check_shape(
         }
     }
     let key = bad_key?;
-    let count = (0..prefix[0].len()).filter(|&i| key_at(&parts, pow2, i) == key).count() as u64;
+    let count = (0..prefix[0].len())
+        .filter(|&i| key_at(&parts, pow2, i) == key)
+        .count() as u64;
     Some(BoxFailure {
         shape: shape.to_vec(),
         box_index: decode_key(key, base, shape),
@@ -297,7 +312,10 @@ fn bytemuck_u32_as_u8(words: &mut [u32]) -> &mut [u8] {
 /// Validates (N, m, t) and returns b^t.
 fn validate(points: &PointSet, base: CheckBase, m: u32, t: u32) -> Result<u64, NetError> {
     if points.len() as u64 > 1 << 32 {
-        return Err(NetError::BadShape(format!("{} points is more than the checker's 2^32", points.len())));
+        return Err(NetError::BadShape(format!(
+            "{} points is more than the checker's 2^32",
+            points.len()
+        )));
     }
     if t > m {
         return Err(NetError::TooLargeT { t, m });
@@ -314,10 +332,11 @@ fn validate(points: &PointSet, base: CheckBase, m: u32, t: u32) -> Result<u64, N
 
 /// The m with N = b^m for this set, or an error naming N.
 pub fn implied_m(points: &PointSet, base: CheckBase) -> Result<u32, NetError> {
-    base.exact_log(points.len()).ok_or(NetError::NotAPowerOfBase {
-        n: points.len(),
-        base: base.get(),
-    })
+    base.exact_log(points.len())
+        .ok_or(NetError::NotAPowerOfBase {
+            n: points.len(),
+            base: base.get(),
+        })
 }
 
 /// Whether the b^m points form a (t,m,s)-net in base b; stops at the first failing shape.
@@ -330,7 +349,12 @@ pub fn implied_m(points: &PointSet, base: CheckBase) -> Result<u32, NetError> {
 /// let p = PointSet::from_rows(Width::new(8).unwrap(), &rows).unwrap();
 /// assert!(check_net(&p, CheckBase::new(2).unwrap(), 2, 0).unwrap().holds);
 /// ```
-pub fn check_net(points: &PointSet, base: CheckBase, m: u32, t: u32) -> Result<NetReport, NetError> {
+pub fn check_net(
+    points: &PointSet,
+    base: CheckBase,
+    m: u32,
+    t: u32,
+) -> Result<NetReport, NetError> {
     check_net_with_progress(points, base, m, t, &no_progress)
 }
 
@@ -344,7 +368,16 @@ pub fn check_net_with_progress(
 ) -> Result<NetReport, NetError> {
     validate(points, base, m, t)?;
     let prefix = prefixes(points, base, m - t, 0..points.len());
-    check_level(points, &views(&prefix), m - t, base, m, t, progress, Search::First)
+    check_level(
+        points,
+        &views(&prefix),
+        m - t,
+        base,
+        m,
+        t,
+        progress,
+        Search::First,
+    )
 }
 
 /// Which failure a level check reports.
@@ -386,14 +419,24 @@ fn check_level(
                     t,
                     dims: points.dims(),
                     holds: false,
-                    shapes_checked: shape_list.iter().position(|s| *s == f.shape).unwrap() as u64 + 1,
+                    shapes_checked: shape_list.iter().position(|s| *s == f.shape).unwrap() as u64
+                        + 1,
                     first_failure: Some(f),
                 });
             }
         }
     }
     let per_shape = shape_list.par_iter().map_init(Vec::new, |scratch, shape| {
-        let r = check_shape(prefix, depth, points.len(), base, k, t_count, shape, scratch);
+        let r = check_shape(
+            prefix,
+            depth,
+            points.len(),
+            base,
+            k,
+            t_count,
+            shape,
+            scratch,
+        );
         progress(1);
         r
     });
@@ -443,12 +486,21 @@ pub fn t_value_with_witness(
     m: u32,
 ) -> Result<(u32, Option<NetReport>), NetError> {
     let t = t_value(points, base, m)?;
-    let witness = if t > 0 { Some(check_net(points, base, m, t - 1)?) } else { None };
+    let witness = if t > 0 {
+        Some(check_net(points, base, m, t - 1)?)
+    } else {
+        None
+    };
     Ok((t, witness))
 }
 
 /// Count histograms of every shape with Σd = m − t.
-pub fn histograms(points: &PointSet, base: CheckBase, m: u32, t: u32) -> Result<Vec<ShapeHistogram>, NetError> {
+pub fn histograms(
+    points: &PointSet,
+    base: CheckBase,
+    m: u32,
+    t: u32,
+) -> Result<Vec<ShapeHistogram>, NetError> {
     validate(points, base, m, t)?;
     let k = m - t;
     let shape_list = shapes(k, points.dims())?;
@@ -483,7 +535,12 @@ pub fn histograms(points: &PointSet, base: CheckBase, m: u32, t: u32) -> Result<
 
 /// The (t,s)-sequence check: every block of b^k consecutive points, t ≤ k ≤ max_m (blocks that
 /// fit in N), is a (t,k,s)-net.
-pub fn check_sequence(points: &PointSet, base: CheckBase, t: u32, max_m: u32) -> Result<SequenceReport, NetError> {
+pub fn check_sequence(
+    points: &PointSet,
+    base: CheckBase,
+    t: u32,
+    max_m: u32,
+) -> Result<SequenceReport, NetError> {
     check_sequence_with_progress(points, base, t, max_m, &no_progress)
 }
 
@@ -538,7 +595,8 @@ pub fn check_sequence_with_progress(
                 shapes_checked += tasks as u64;
             }
             Some((block, f)) => {
-                let pos = block * shape_list.len() + shape_list.iter().position(|s| *s == f.shape).unwrap();
+                let pos = block * shape_list.len()
+                    + shape_list.iter().position(|s| *s == f.shape).unwrap();
                 blocks_checked += block as u64 + 1;
                 shapes_checked += pos as u64 + 1;
                 return Ok(SequenceReport {

@@ -20,7 +20,11 @@ pub enum NetError {
     /// Zero dimensions, or rows of differing length.
     BadShape(String),
     /// A coordinate that is NaN, outside [0,1) or not an exact dyadic; names point and dimension.
-    BadValue { point: usize, dim: usize, reason: String },
+    BadValue {
+        point: usize,
+        dim: usize,
+        reason: String,
+    },
     /// A dimension index past the point set's dimensions.
     NoSuchDimension { dim: usize, dims: usize },
     /// Too many shapes to enumerate.
@@ -36,13 +40,22 @@ impl fmt::Display for NetError {
         match self {
             NetError::BaseTooSmall(b) => write!(f, "base {b} is below 2"),
             NetError::NotPowerOfTwo(b) => {
-                write!(f, "base {b} is not 2^q with q in 1..=8, which the rank path needs")
+                write!(
+                    f,
+                    "base {b} is not 2^q with q in 1..=8, which the rank path needs"
+                )
             }
             NetError::NotAPowerOfBase { n, base } => {
-                write!(f, "{n} points is not a power of the base {base}; give --m or use b^m points")
+                write!(
+                    f,
+                    "{n} points is not a power of the base {base}; give --m or use b^m points"
+                )
             }
             NetError::WrongCount { n, base, m } => {
-                write!(f, "{n} points, but a net with base {base} and m = {m} has {base}^{m} points")
+                write!(
+                    f,
+                    "{n} points, but a net with base {base} and m = {m} has {base}^{m} points"
+                )
             }
             NetError::TooLargeT { t, m } => write!(f, "t = {t} is larger than m = {m}"),
             NetError::Empty => write!(f, "the point set is empty"),
@@ -58,7 +71,10 @@ impl fmt::Display for NetError {
                 "{shapes} shapes to check exceeds the limit {limit}; check projections instead"
             ),
             NetError::TooManyBits { bits } => {
-                write!(f, "the rank path handles at most 64 index bits, {bits} requested")
+                write!(
+                    f,
+                    "the rank path handles at most 64 index bits, {bits} requested"
+                )
             }
             NetError::BadProjection(s) => write!(f, "bad projection list: {s}"),
         }

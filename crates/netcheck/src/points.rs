@@ -48,7 +48,7 @@ impl PointSet {
         if flat.is_empty() {
             return Err(NetError::Empty);
         }
-        if flat.len() % dims != 0 {
+        if !flat.len().is_multiple_of(dims) {
             return Err(NetError::BadShape(format!(
                 "{} values do not split into points of {dims} coordinates",
                 flat.len()
@@ -87,7 +87,10 @@ impl PointSet {
 
     /// From per-dimension columns (all of equal length).
     pub fn from_columns(width: Width, coords: Vec<Vec<u64>>) -> Result<Self, NetError> {
-        let n = coords.first().ok_or(NetError::BadShape("zero dimensions".into()))?.len();
+        let n = coords
+            .first()
+            .ok_or(NetError::BadShape("zero dimensions".into()))?
+            .len();
         if n == 0 {
             return Err(NetError::Empty);
         }

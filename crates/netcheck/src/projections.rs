@@ -26,7 +26,10 @@ impl FromStr for ProjectionSpec {
             return Ok(ProjectionSpec::Pairs);
         }
         for (prefix, make) in [
-            ("groups:", ProjectionSpec::Groups as fn(usize) -> ProjectionSpec),
+            (
+                "groups:",
+                ProjectionSpec::Groups as fn(usize) -> ProjectionSpec,
+            ),
             ("blocks:", ProjectionSpec::Blocks),
         ] {
             if let Some(g) = s.strip_prefix(prefix) {
@@ -40,7 +43,8 @@ impl FromStr for ProjectionSpec {
         let mut list = Vec::new();
         for part in s.split(';') {
             let dims: Result<Vec<usize>, _> = part.split(',').map(|d| d.trim().parse()).collect();
-            let dims = dims.map_err(|_| bad("expected pairs, groups:G, blocks:G or lists like 0,1;2,3"))?;
+            let dims =
+                dims.map_err(|_| bad("expected pairs, groups:G, blocks:G or lists like 0,1;2,3"))?;
             list.push(dims);
         }
         Ok(ProjectionSpec::List(list))
@@ -54,12 +58,18 @@ impl ProjectionSpec {
             ProjectionSpec::Pairs => (0..s)
                 .flat_map(|i| (i + 1..s).map(move |j| vec![i, j]))
                 .collect(),
-            ProjectionSpec::Groups(g) => (0..s.saturating_sub(g - 1)).map(|i| (i..i + g).collect()).collect(),
-            ProjectionSpec::Blocks(g) => (0..s / g).map(|b| (b * g..(b + 1) * g).collect()).collect(),
+            ProjectionSpec::Groups(g) => (0..s.saturating_sub(g - 1))
+                .map(|i| (i..i + g).collect())
+                .collect(),
+            ProjectionSpec::Blocks(g) => {
+                (0..s / g).map(|b| (b * g..(b + 1) * g).collect()).collect()
+            }
             ProjectionSpec::List(l) => l.clone(),
         };
         if out.is_empty() {
-            return Err(NetError::BadProjection(format!("no projection of {self:?} fits {s} dimensions")));
+            return Err(NetError::BadProjection(format!(
+                "no projection of {self:?} fits {s} dimensions"
+            )));
         }
         for p in &out {
             if p.is_empty() {

@@ -146,7 +146,12 @@ pub fn t_value(seq: &DigitalSequence, dims: &[usize], q: u32, m: u32) -> Result<
 /// The least t for which the digital sequence is a (t,s)-sequence for all block sizes b^m,
 /// m ≤ max_m: the largest t-value of its leading nets (every block of b^m consecutive points
 /// is a digital shift of the first one, which permutes boxes).
-pub fn sequence_t_value(seq: &DigitalSequence, dims: &[usize], q: u32, max_m: u32) -> Result<u32, NetError> {
+pub fn sequence_t_value(
+    seq: &DigitalSequence,
+    dims: &[usize],
+    q: u32,
+    max_m: u32,
+) -> Result<u32, NetError> {
     let mut t = 0;
     for m in 1..=max_m {
         t = t.max(t_value(seq, dims, q, m)?);

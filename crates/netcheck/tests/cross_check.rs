@@ -1,12 +1,12 @@
 //! The counting path, the rank path and the brute-force oracle decide the same facts.
 
+use gartowen_core::PowerOfTwoBase;
 use gartowen_core::{SplitMix64, Width};
 use gartowen_netcheck::counting::{check_net, check_sequence, t_value};
 use gartowen_netcheck::rank::{self, RowMatrices};
 use gartowen_netcheck::{CheckBase, PointSet, ProjectionSpec};
 use gartowen_oracles::box_counting;
 use gartowen_seq::{sobol, sz, DigitalSequence};
-use gartowen_core::PowerOfTwoBase;
 use proptest::prelude::*;
 
 /// The first n points (natural order) of the given dimensions, as a point set.
@@ -25,7 +25,11 @@ fn rows_of(p: &PointSet) -> Vec<Vec<u64>> {
 fn random_sequence(seed: u64, dims: usize, width: Width) -> DigitalSequence {
     let mut rng = SplitMix64::new(seed);
     let cols: Vec<Vec<u64>> = (0..dims)
-        .map(|_| (0..width.bits()).map(|_| rng.next_u64() & width.mask()).collect())
+        .map(|_| {
+            (0..width.bits())
+                .map(|_| rng.next_u64() & width.mask())
+                .collect()
+        })
         .collect();
     DigitalSequence::from_columns("random", width, PowerOfTwoBase::B2, &cols).unwrap()
 }
@@ -52,7 +56,13 @@ fn sobol_pairs_of_the_first_32_dims_agree_for_m_1_to_20() {
     for m in 1..=20 {
         assert_eq!(table[&(0, 1, m)], 0);
     }
-    let golden = [((0, 2, 20), 1), ((1, 2, 20), 1), ((2, 3, 12), 2), ((4, 7, 10), 1), ((30, 31, 20), 2)];
+    let golden = [
+        ((0, 2, 20), 1),
+        ((1, 2, 20), 1),
+        ((2, 3, 12), 2),
+        ((4, 7, 10), 1),
+        ((30, 31, 20), 2),
+    ];
     for (key, t) in golden {
         assert_eq!(table[&key], t, "golden {key:?}");
     }
@@ -77,7 +87,11 @@ fn counting_agrees_with_brute_force_on_tiny_sets() {
                 let p = PointSet::from_rows(width, &rows).unwrap();
                 let base = CheckBase::new(b).unwrap();
                 let t_fast = t_value(&p, base, m).unwrap();
-                assert_eq!(t_fast, box_counting::t_value(&rows, w, b, m), "b {b} m {m} trial {trial}");
+                assert_eq!(
+                    t_fast,
+                    box_counting::t_value(&rows, w, b, m),
+                    "b {b} m {m} trial {trial}"
+                );
                 for t in 0..=m {
                     let fast = check_net(&p, base, m, t).unwrap();
                     let brute = box_counting::first_failure(&rows, w, b, m, t);
@@ -101,16 +115,29 @@ fn counting_agrees_with_brute_force_on_tiny_sets() {
 fn sz4_is_a_0_4_sequence_in_base_4_and_its_pairs_are_binary_0_2() {
     let seq = sz::sz4(4, Width::W32).unwrap();
     // Rank path to 24 index bits (m = 12 base-4 digits; binary m = 24).
-    assert_eq!(rank::sequence_t_value(&seq, &[0, 1, 2, 3], 2, 12).unwrap(), 0);
+    assert_eq!(
+        rank::sequence_t_value(&seq, &[0, 1, 2, 3], 2, 12).unwrap(),
+        0
+    );
     for pair in [[0, 1], [2, 3]] {
-        assert_eq!(rank::sequence_t_value(&seq, &pair, 1, 24).unwrap(), 0, "{pair:?}");
+        assert_eq!(
+            rank::sequence_t_value(&seq, &pair, 1, 24).unwrap(),
+            0,
+            "{pair:?}"
+        );
     }
     // Counting path: base 4 to m = 8 (65536 points), every block of every size.
     let p = points(&seq, &[0, 1, 2, 3], 1 << 16);
     let r = check_sequence(&p, CheckBase::new(4).unwrap(), 0, 8).unwrap();
     assert!(r.holds, "{r:?}");
     for pair in [[0, 1], [2, 3]] {
-        let r = check_sequence(&p.project(&pair).unwrap(), CheckBase::new(2).unwrap(), 0, 16).unwrap();
+        let r = check_sequence(
+            &p.project(&pair).unwrap(),
+            CheckBase::new(2).unwrap(),
+            0,
+            16,
+        )
+        .unwrap();
         assert!(r.holds, "{pair:?}: {r:?}");
     }
 }
@@ -119,12 +146,24 @@ fn sz4_is_a_0_4_sequence_in_base_4_and_its_pairs_are_binary_0_2() {
 fn sz16_is_a_0_16_sequence_in_base_16_with_0_4_quads_and_binary_0_2_pairs() {
     let seq = sz::sz16(16, Width::W32).unwrap();
     let all: Vec<usize> = (0..16).collect();
-    assert_eq!(rank::sequence_t_value(&seq, &all, 4, 6).unwrap(), 0, "rank path, 24 index bits");
+    assert_eq!(
+        rank::sequence_t_value(&seq, &all, 4, 6).unwrap(),
+        0,
+        "rank path, 24 index bits"
+    );
     for quad in ProjectionSpec::Blocks(4).expand(16).unwrap() {
-        assert_eq!(rank::sequence_t_value(&seq, &quad, 2, 12).unwrap(), 0, "quad {quad:?}");
+        assert_eq!(
+            rank::sequence_t_value(&seq, &quad, 2, 12).unwrap(),
+            0,
+            "quad {quad:?}"
+        );
     }
     for pair in ProjectionSpec::Blocks(2).expand(16).unwrap() {
-        assert_eq!(rank::sequence_t_value(&seq, &pair, 1, 24).unwrap(), 0, "pair {pair:?}");
+        assert_eq!(
+            rank::sequence_t_value(&seq, &pair, 1, 24).unwrap(),
+            0,
+            "pair {pair:?}"
+        );
     }
     // Counting path: base 16 to m = 4 (65536 points, 3876 shapes per net at m = 4).
     let p = points(&seq, &all, 1 << 16);
@@ -136,14 +175,20 @@ fn sz16_is_a_0_16_sequence_in_base_16_with_0_4_quads_and_binary_0_2_pairs() {
 
 #[test]
 fn cross_group_pair_0_2_is_not_binary_0_2_at_m_2() {
-    for seq in [sz::sz4(4, Width::W32).unwrap(), sz::sz16(4, Width::W32).unwrap()] {
+    for seq in [
+        sz::sz4(4, Width::W32).unwrap(),
+        sz::sz16(4, Width::W32).unwrap(),
+    ] {
         assert!(rank::t_value(&seq, &[0, 2], 1, 2).unwrap() > 0);
         let p = points(&seq, &[0, 2], 4);
         let r = check_net(&p, CheckBase::new(2).unwrap(), 2, 0).unwrap();
         assert!(!r.holds, "expected: cross-group pairs are not binary (0,2)");
         assert_eq!(
             Some(r.first_failure.unwrap().shape),
-            RowMatrices::new(&seq, &[0, 2], 1, 2).unwrap().first_failure(0).unwrap()
+            RowMatrices::new(&seq, &[0, 2], 1, 2)
+                .unwrap()
+                .first_failure(0)
+                .unwrap()
         );
     }
 }
@@ -152,7 +197,11 @@ fn cross_group_pair_0_2_is_not_binary_0_2_at_m_2() {
 fn a_mutated_point_is_caught_with_the_failing_shape() {
     let seq = sobol::sequence(2, Width::W32).unwrap();
     let mut p = points(&seq, &[0, 1], 1 << 10);
-    assert!(check_net(&p, CheckBase::new(2).unwrap(), 10, 0).unwrap().holds);
+    assert!(
+        check_net(&p, CheckBase::new(2).unwrap(), 10, 0)
+            .unwrap()
+            .holds
+    );
     // Move point 5 onto point 6's box in dimension 0 at full depth: shape (10, 0) collides.
     let x6 = p.column(0)[6];
     p.set(5, 0, x6 ^ 1);
@@ -163,7 +212,10 @@ fn a_mutated_point_is_caught_with_the_failing_shape() {
     let f = r.first_failure.unwrap();
     assert_eq!(f.shape, brute.shape);
     assert_eq!(f.count, 2);
-    assert_eq!(box_counting::count_in_box(&rows, 32, 2, &f.shape, &f.box_index), 2);
+    assert_eq!(
+        box_counting::count_in_box(&rows, 32, 2, &f.shape, &f.box_index),
+        2
+    );
 }
 
 #[test]
@@ -171,9 +223,19 @@ fn a_mutated_matrix_is_caught_by_both_paths_with_the_same_shape() {
     let seq = sobol::sequence(2, Width::W32).unwrap();
     let mut cols: Vec<Vec<u64>> = (0..2).map(|j| seq.columns(j).to_vec()).collect();
     cols[1][3] = cols[1][2]; // two equal columns: dependent rows
-    let broken = DigitalSequence::from_columns("broken", Width::W32, PowerOfTwoBase::B2, &cols).unwrap();
-    let by_rank = RowMatrices::new(&broken, &[0, 1], 1, 6).unwrap().first_failure(0).unwrap();
-    let r = check_net(&points(&broken, &[0, 1], 64), CheckBase::new(2).unwrap(), 6, 0).unwrap();
+    let broken =
+        DigitalSequence::from_columns("broken", Width::W32, PowerOfTwoBase::B2, &cols).unwrap();
+    let by_rank = RowMatrices::new(&broken, &[0, 1], 1, 6)
+        .unwrap()
+        .first_failure(0)
+        .unwrap();
+    let r = check_net(
+        &points(&broken, &[0, 1], 64),
+        CheckBase::new(2).unwrap(),
+        6,
+        0,
+    )
+    .unwrap();
     assert!(by_rank.is_some() && !r.holds);
     assert_eq!(Some(r.first_failure.unwrap().shape), by_rank);
 }

@@ -6,7 +6,9 @@ use gartowen_netcheck::{CheckBase, PointSet};
 
 fn broken_sobol() -> PointSet {
     let seq = gartowen_seq::sobol::sequence(3, Width::W32).unwrap();
-    let cols = (0..3).map(|j| (0..4096u64).map(|i| seq.point(i, j)).collect()).collect();
+    let cols = (0..3)
+        .map(|j| (0..4096u64).map(|i| seq.point(i, j)).collect())
+        .collect();
     let mut p = PointSet::from_columns(Width::W32, cols).unwrap();
     // Several independent defects, so threads racing over shapes could see different ones.
     for (i, j) in [(100, 0), (2000, 1), (3000, 2), (4000, 1)] {
@@ -21,7 +23,10 @@ fn one_two_and_four_threads_give_identical_reports() {
     let p = broken_sobol();
     let base = CheckBase::new(2).unwrap();
     let run = |threads: usize| {
-        let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
         pool.install(|| {
             (
                 check_net(&p, base, 12, 0).unwrap(),

@@ -1,0 +1,203 @@
+//! Point-set readers: .npy (float64, uint32, uint64; C or Fortran order), CSV of floats, and
+//! hex words. Every error names the file and the offending line, point or dtype.
+
+use crate::CliError;
+use gartowen::core::Width;
+use gartowen::netcheck::PointSet;
+use std::path::Path;
+
+/// Input formats.
+#[derive(Clone, Copy, Debug, clap::ValueEnum, PartialEq, Eq)]
+pub enum InputFormat {
+    /// By file extension: .npy, .csv, .hex/.txt.
+    Auto,
+    /// NumPy .npy: float64 values in [0,1), or uint32/uint64 words.
+    Npy,
+    /// Comma-separated float values in [0,1), one point per line.
+    Csv,
+    /// Hex words (8 or 16 digits), whitespace-separated, one point per line.
+    Hex,
+}
+
+fn bad(path: &Path, msg: impl std::fmt::Display) -> CliError {
+    CliError::Usage(format!("{}: {msg}", path.display()))
+}
+
+/// Reads a point set.
+pub fn read_points(path: &Path, format: InputFormat) -> Result<PointSet, CliError> {
+    let format = match format {
+        InputFormat::Auto => match path.extension().and_then(|e| e.to_str()) {
+            Some("npy") => InputFormat::Npy,
+            Some("csv") => InputFormat::Csv,
+            Some("hex") | Some("txt") => InputFormat::Hex,
+            _ => {
+                return Err(bad(
+                    path,
+                    "cannot tell the format from the extension; pass --format npy|csv|hex",
+                ))
+            }
+        },
+        f => f,
+    };
+    let bytes = std::fs::read(path)
+        .map_err(|e| CliError::Io(format!("cannot read {}: {e}", path.display())))?;
+    match format {
+        InputFormat::Npy => read_npy(path, &bytes),
+        InputFormat::Csv => read_csv(path, &bytes),
+        InputFormat::Hex => read_hex(path, &bytes),
+        InputFormat::Auto => unreachable!(),
+    }
+}
+
+fn read_npy(path: &Path, bytes: &[u8]) -> Result<PointSet, CliError> {
+    let npy =
+        npyz::NpyFile::new(bytes).map_err(|e| bad(path, format!("not a valid .npy file: {e}")))?;
+    let shape = npy.shape().to_vec();
+    let (n, dims) = match shape.as_slice() {
+        [n] => (*n as usize, 1usize),
+        [n, d] => (*n as usize, *d as usize),
+        _ => {
+            return Err(bad(
+                path,
+                format!("expected a 1-D or 2-D array, got shape {shape:?}"),
+            ))
+        }
+    };
+    if n == 0 || dims == 0 {
+        return Err(bad(path, format!("empty array of shape {shape:?}")));
+    }
+    let fortran = npy.order() == npyz::Order::Fortran;
+    let descr = npy.dtype().descr();
+    // Fortran order stores dimension-major; bring it to row-major.
+    fn row_major<T: Copy>(v: Vec<T>, n: usize, dims: usize, fortran: bool) -> Vec<T> {
+        if !fortran || dims == 1 {
+            return v;
+        }
+        (0..n * dims)
+            .map(|k| v[(k % dims) * n + k / dims])
+            .collect()
+    }
+    let err = |e: std::io::Error| bad(path, format!("cannot decode data: {e}"));
+    let set = match descr.trim_matches('\'').trim_start_matches(['<', '|', '=']) {
+        "f8" => {
+            let v: Vec<f64> = npy.into_vec().map_err(err)?;
+            PointSet::from_f64(dims, &row_major(v, n, dims, fortran))
+        }
+        "u4" => {
+            let v: Vec<u32> = npy.into_vec().map_err(err)?;
+            let v: Vec<u64> = row_major(v, n, dims, fortran)
+                .into_iter()
+                .map(u64::from)
+                .collect();
+            PointSet::from_flat(Width::W32, dims, &v)
+        }
+        "u8" => {
+            let v: Vec<u64> = npy.into_vec().map_err(err)?;
+            PointSet::from_flat(Width::W64, dims, &row_major(v, n, dims, fortran))
+        }
+        other => return Err(bad(
+            path,
+            format!(
+                "unsupported dtype '{other}': use float64 values in [0,1) or uint32/uint64 words"
+            ),
+        )),
+    };
+    set.map_err(|e| bad(path, e))
+}
+
+/// Lines that carry data: trimmed, skipping blank lines and '#' comments, with 1-based numbers.
+fn data_lines(text: &str) -> impl Iterator<Item = (usize, &str)> {
+    text.lines()
+        .enumerate()
+        .map(|(i, l)| (i + 1, l.trim()))
+        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'))
+}
+
+fn utf8<'a>(path: &Path, bytes: &'a [u8]) -> Result<&'a str, CliError> {
+    std::str::from_utf8(bytes).map_err(|_| bad(path, "not a text file (invalid UTF-8)"))
+}
+
+fn read_csv(path: &Path, bytes: &[u8]) -> Result<PointSet, CliError> {
+    let text = utf8(path, bytes)?;
+    let mut values = Vec::new();
+    let mut dims = None;
+    for (line_no, line) in data_lines(text) {
+        let row: Vec<&str> = line.split(',').map(str::trim).collect();
+        match dims {
+            None => dims = Some(row.len()),
+            Some(d) if d != row.len() => {
+                return Err(bad(
+                    path,
+                    format!(
+                        "line {line_no} has {} values, earlier lines have {d}",
+                        row.len()
+                    ),
+                ))
+            }
+            _ => {}
+        }
+        for field in row {
+            let v: f64 = field
+                .parse()
+                .map_err(|_| bad(path, format!("line {line_no}: '{field}' is not a number")))?;
+            values.push(v);
+        }
+    }
+    let dims = dims.ok_or_else(|| bad(path, "no data lines"))?;
+    PointSet::from_f64(dims, &values).map_err(|e| bad(path, e))
+}
+
+fn read_hex(path: &Path, bytes: &[u8]) -> Result<PointSet, CliError> {
+    let text = utf8(path, bytes)?;
+    let mut words = Vec::new();
+    let mut dims = None;
+    let mut digits = None;
+    for (line_no, line) in data_lines(text) {
+        let row: Vec<&str> = line.split_whitespace().collect();
+        match dims {
+            None => dims = Some(row.len()),
+            Some(d) if d != row.len() => {
+                return Err(bad(
+                    path,
+                    format!(
+                        "line {line_no} has {} words, earlier lines have {d}",
+                        row.len()
+                    ),
+                ))
+            }
+            _ => {}
+        }
+        for tok in row {
+            let tok = tok.trim_start_matches("0x");
+            match digits {
+                None if tok.len() == 8 || tok.len() == 16 => digits = Some(tok.len()),
+                None => {
+                    return Err(bad(
+                        path,
+                        format!("line {line_no}: '{tok}' is not an 8- or 16-digit hex word"),
+                    ))
+                }
+                Some(d) if d != tok.len() => {
+                    return Err(bad(
+                        path,
+                        format!(
+                            "line {line_no}: '{tok}' has {} digits, earlier words {d}",
+                            tok.len()
+                        ),
+                    ))
+                }
+                _ => {}
+            }
+            let w = u64::from_str_radix(tok, 16)
+                .map_err(|_| bad(path, format!("line {line_no}: '{tok}' is not hexadecimal")))?;
+            words.push(w);
+        }
+    }
+    let dims = dims.ok_or_else(|| bad(path, "no data lines"))?;
+    let width = if digits == Some(8) {
+        Width::W32
+    } else {
+        Width::W64
+    };
+    PointSet::from_flat(width, dims, &words).map_err(|e| bad(path, e))
+}
