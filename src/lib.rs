@@ -11,5 +11,9 @@ use gartowen_core::Registry;
 
 /// Every scrambler gartowen knows, in one list; cross-checks iterate over it.
 pub fn registry() -> Registry {
-    Registry::with_core()
+    let mut r = Registry::with_core();
+    for spec in gartowen_oracles::registry::specs() {
+        r.add(spec);
+    }
+    r
 }

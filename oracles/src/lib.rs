@@ -2,3 +2,9 @@
 //! Readable before fast: each one is the definition, written out.
 
 pub mod box_counting;
+pub mod exact_laws;
+pub mod full_tree;
+pub mod inspector;
+pub mod registry;
+
+pub use full_tree::{FullTreeOwen, OwenVariant};

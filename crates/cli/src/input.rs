@@ -95,12 +95,14 @@ fn read_npy(path: &Path, bytes: &[u8]) -> Result<PointSet, CliError> {
             let v: Vec<u64> = npy.into_vec().map_err(err)?;
             PointSet::from_flat(Width::W64, dims, &row_major(v, n, dims, fortran))
         }
-        other => return Err(bad(
-            path,
-            format!(
+        other => {
+            return Err(bad(
+                path,
+                format!(
                 "unsupported dtype '{other}': use float64 values in [0,1) or uint32/uint64 words"
             ),
-        )),
+            ))
+        }
     };
     set.map_err(|e| bad(path, e))
 }

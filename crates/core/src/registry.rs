@@ -82,8 +82,18 @@ impl ScramblerRequest {
     }
 }
 
-/// How to build a scrambler: the request (options) and its seed.
-pub type BuildFn = fn(&ScramblerRequest, u64) -> Result<Box<dyn Scrambler>, CoreError>;
+/// What a constructor gets besides the request: the seed, and the base to use when the
+/// scrambler takes one and the request does not say (the sequence's own base).
+#[derive(Debug, Clone, Copy)]
+pub struct BuildContext {
+    /// The seed.
+    pub seed: u64,
+    /// Base for scramblers whose base is a parameter (`:base=B` overrides it).
+    pub default_base: PowerOfTwoBase,
+}
+
+/// How to build a scrambler from a request and its context.
+pub type BuildFn = fn(&ScramblerRequest, &BuildContext) -> Result<Box<dyn Scrambler>, CoreError>;
 
 /// A registry entry: name, what it is, and how to build it.
 #[derive(Clone)]
@@ -106,7 +116,10 @@ pub struct Registry {
     specs: Vec<ScramblerSpec>,
 }
 
-fn build_identity(req: &ScramblerRequest, _seed: u64) -> Result<Box<dyn Scrambler>, CoreError> {
+fn build_identity(
+    req: &ScramblerRequest,
+    _ctx: &BuildContext,
+) -> Result<Box<dyn Scrambler>, CoreError> {
     req.allow_only(&[])?;
     Ok(Box::new(Identity))
 }
@@ -145,8 +158,24 @@ impl Registry {
         self.specs.iter().find(|s| s.name == name)
     }
 
-    /// Builds the scrambler described by `request` (`NAME[:OPTION…]`) with `seed`.
+    /// Builds the scrambler described by `request` (`NAME[:OPTION…]`) with `seed`, in base 2
+    /// where the base is a parameter.
     pub fn build(&self, request: &str, seed: u64) -> Result<Box<dyn Scrambler>, CoreError> {
+        self.build_with(
+            request,
+            &BuildContext {
+                seed,
+                default_base: PowerOfTwoBase::B2,
+            },
+        )
+    }
+
+    /// Builds the scrambler described by `request` in the given context.
+    pub fn build_with(
+        &self,
+        request: &str,
+        ctx: &BuildContext,
+    ) -> Result<Box<dyn Scrambler>, CoreError> {
         let req = ScramblerRequest::parse(request)?;
         let spec = self
             .get(&req.name)
@@ -154,6 +183,23 @@ impl Registry {
                 name: req.name.clone(),
                 known: self.specs.iter().map(|s| s.name.to_string()).collect(),
             })?;
-        (spec.build)(&req, seed)
+        (spec.build)(&req, ctx)
+    }
+}
+
+impl ScramblerRequest {
+    /// The `base=B` option as a power-of-two base, or `default` when absent.
+    pub fn base_or(&self, default: PowerOfTwoBase) -> Result<PowerOfTwoBase, CoreError> {
+        match self.option("base") {
+            None => Ok(default),
+            Some(text) => {
+                let b: u64 = text.parse().map_err(|_| CoreError::InvalidOption {
+                    scrambler: self.name.clone(),
+                    option: "base".into(),
+                    reason: format!("'{text}' is not a number"),
+                })?;
+                PowerOfTwoBase::from_base(b)
+            }
+        }
     }
 }

@@ -20,7 +20,11 @@ pub fn run(a: ListArgs) -> Result<ExitCode, CliError> {
     let mut rows = Vec::new();
     for spec in registry.specs() {
         // Table sizes are reported for the default configuration (seed 0).
-        let s = (spec.build)(&gartowen::core::ScramblerRequest::parse(spec.name)?, 0)?;
+        let ctx = gartowen::core::BuildContext {
+            seed: 0,
+            default_base: spec.default_base,
+        };
+        let s = (spec.build)(&gartowen::core::ScramblerRequest::parse(spec.name)?, &ctx)?;
         rows.push((spec, s.base().base(), s.table_bytes()));
     }
     let mut out = std::io::stdout().lock();
