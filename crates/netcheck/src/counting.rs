@@ -196,12 +196,12 @@ fn decode_key(key: u32, base: CheckBase, shape: &[u32]) -> Vec<u64> {
     index
 }
 
-/// Checks one shape over the first `n` points; returns the first overflowing box.
-/// `prefix` holds floor(x·b^depth); the shape has Σd = k ≤ depth.
+/// Checks one shape over points `start..start + n`; returns the first overflowing box.
+/// `parts` are the shape's key parts over prefixes floor(x·b^depth); the shape has Σd = k.
 #[allow(clippy::too_many_arguments)]
 fn check_shape(
-    prefix: &[&[u32]],
-    depth: u32,
+    parts: &[KeyPart],
+    start: usize,
     n: usize,
     base: CheckBase,
     k: u32,
@@ -209,7 +209,7 @@ fn check_shape(
     shape: &[u32],
     scratch: &mut Vec<u32>,
 ) -> Option<BoxFailure> {
-    let parts = key_parts(prefix, base, depth, shape);
+    let (offset, end) = (start, start + n);
     let pow2 = base.log2().is_some();
     let cells = base.pow(k).unwrap() as usize;
     let mut keys = [0u32; CHUNK];
@@ -220,9 +220,9 @@ fn check_shape(
         scratch.clear();
         scratch.resize(cells.div_ceil(32), 0);
         let mut fresh = [false; CHUNK];
-        'chunks: for start in (0..n).step_by(CHUNK) {
-            let keys = &mut keys[..CHUNK.min(n - start)];
-            keys_of(&parts, pow2, start, keys);
+        'chunks: for start in (offset..end).step_by(CHUNK) {
+            let keys = &mut keys[..CHUNK.min(end - start)];
+            keys_of(parts, pow2, start, keys);
             let mut hit = 0u32;
             for (&key, fresh) in keys.iter().zip(fresh.iter_mut()) {
                 let word = &mut scratch[(key >> 5) as usize];
@@ -254,9 +254,9 @@ fn check_shape(
     } else if t_count < u8::MAX as u64 {
         // Byte counters keep the histogram 4× smaller than u32 (cache-resident longer).
         let counts = scratch_bytes(scratch, cells);
-        'chunks8: for start in (0..n).step_by(CHUNK) {
-            let keys = &mut keys[..CHUNK.min(n - start)];
-            keys_of(&parts, pow2, start, keys);
+        'chunks8: for start in (offset..end).step_by(CHUNK) {
+            let keys = &mut keys[..CHUNK.min(end - start)];
+            keys_of(parts, pow2, start, keys);
             for &key in keys.iter() {
                 let c = &mut counts[key as usize];
                 *c += 1;
@@ -269,9 +269,9 @@ fn check_shape(
     } else {
         scratch.clear();
         scratch.resize(cells, 0);
-        'chunks32: for start in (0..n).step_by(CHUNK) {
-            let keys = &mut keys[..CHUNK.min(n - start)];
-            keys_of(&parts, pow2, start, keys);
+        'chunks32: for start in (offset..end).step_by(CHUNK) {
+            let keys = &mut keys[..CHUNK.min(end - start)];
+            keys_of(parts, pow2, start, keys);
             for &key in keys.iter() {
                 let c = &mut scratch[key as usize];
                 *c += 1;
@@ -283,8 +283,8 @@ fn check_shape(
         }
     }
     let key = bad_key?;
-    let count = (0..prefix[0].len())
-        .filter(|&i| key_at(&parts, pow2, i) == key)
+    let count = (offset..end)
+        .filter(|&i| key_at(parts, pow2, i) == key)
         .count() as u64;
     Some(BoxFailure {
         shape: shape.to_vec(),
@@ -410,7 +410,8 @@ fn check_level(
         let probe = points.len() / 64;
         if probe >= 64 {
             let hit = shape_list.par_iter().map_init(Vec::new, |scratch, shape| {
-                check_shape(prefix, depth, probe, base, k, t_count, shape, scratch)
+                let parts = key_parts(prefix, base, depth, shape);
+                check_shape(&parts, 0, probe, base, k, t_count, shape, scratch)
             });
             if let Some(f) = hit.find_any(|r| r.is_some()).flatten() {
                 return Ok(NetReport {
@@ -427,16 +428,8 @@ fn check_level(
         }
     }
     let per_shape = shape_list.par_iter().map_init(Vec::new, |scratch, shape| {
-        let r = check_shape(
-            prefix,
-            depth,
-            points.len(),
-            base,
-            k,
-            t_count,
-            shape,
-            scratch,
-        );
+        let parts = key_parts(prefix, base, depth, shape);
+        let r = check_shape(&parts, 0, points.len(), base, k, t_count, shape, scratch);
         progress(1);
         r
     });
@@ -574,21 +567,30 @@ pub fn check_sequence_with_progress(
         let k = m - t;
         let shape_list = shapes(k, points.dims())?;
         let prefix = prefixes(points, base, k, 0..blocks * size);
+        let views = views(&prefix);
+        let plans: Vec<Vec<KeyPart>> = shape_list
+            .iter()
+            .map(|sh| key_parts(&views, base, k, sh))
+            .collect();
         let tasks = blocks * shape_list.len();
-        let failure = (0..tasks)
-            .into_par_iter()
-            .map_init(Vec::new, |scratch, task| {
-                let (block, s) = (task / shape_list.len(), task % shape_list.len());
-                let slice: Vec<&[u32]> = prefix
-                    .iter()
-                    .map(|p| &p[block * size..(block + 1) * size])
-                    .collect();
-                let r = check_shape(&slice, k, size, base, k, t_count, &shape_list[s], scratch);
-                progress(1);
-                r.map(|f| (block, f))
-            })
-            .find_first(|r| r.is_some())
-            .flatten();
+        // Blocks in parallel (runs of small blocks per task); shapes in order inside a block,
+        // so the first failure in (block, shape) order is found deterministically.
+        let failure = if k == 0 {
+            None // the single box of a block holds all b^t points
+        } else {
+            (0..blocks)
+                .into_par_iter()
+                .with_min_len((1 << 14) / size.min(1 << 14))
+                .map_init(Vec::new, |scratch, block| {
+                    let found = shape_list.iter().zip(&plans).find_map(|(shape, parts)| {
+                        check_shape(parts, block * size, size, base, k, t_count, shape, scratch)
+                    });
+                    progress(shape_list.len() as u64);
+                    found.map(|f| (block, f))
+                })
+                .find_first(|r| r.is_some())
+                .flatten()
+        };
         match failure {
             None => {
                 blocks_checked += blocks as u64;
