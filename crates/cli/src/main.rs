@@ -24,6 +24,7 @@ struct Cli {
 enum Command {
     Generate(commands::generate::GenerateArgs),
     Check(commands::check::CheckArgs),
+    Inspect(commands::inspect::InspectArgs),
     Matrices(commands::matrices::MatricesArgs),
     List(commands::list::ListArgs),
 }
@@ -33,6 +34,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Generate(a) => commands::generate::run(a),
         Command::Check(a) => commands::check::run(a),
+        Command::Inspect(a) => commands::inspect::run(a),
         Command::Matrices(a) => commands::matrices::run(a),
         Command::List(a) => commands::list::run(a),
     };

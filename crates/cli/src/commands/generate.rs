@@ -36,6 +36,8 @@ pub enum PointOrder {
 ///   gartowen generate --seq sobol --dims 2 --log2-n 4 --format hex
 ///   gartowen generate --seq sz16 --dims 16 --n 4096 --format npy -o sz16.npy
 ///   gartowen generate --seq sobol --dims 3 --n 8 --order gray --format csv   (scipy's rows)
+///   gartowen generate --seq sz16 --dims 16 --log2-n 8 --scramble owen-oracle --seed 7
+///   gartowen generate --seq sobol --dims 2 --log2-n 8 --scramble owen-oracle:xor --scramble-base 4
 #[derive(Args, Debug)]
 #[command(verbatim_doc_comment)]
 pub struct GenerateArgs {
@@ -72,6 +74,10 @@ pub struct GenerateArgs {
     /// Seed of the scrambler.
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
+    /// Scrambling base for scramblers whose base is a parameter (default: the sequence's own:
+    /// sobol 2, sz4 4, sz16 16). A `:base=B` option in --scramble takes precedence.
+    #[arg(long = "scramble-base")]
+    pub scramble_base: Option<u64>,
     /// Output file (default: standard output). Written atomically.
     #[arg(short = 'o', long)]
     pub output: Option<PathBuf>,
@@ -109,7 +115,15 @@ fn plan(a: &GenerateArgs) -> Result<Plan, CliError> {
         }
     };
     seq.check_range(a.start, count)?;
-    let scrambler = gartowen::registry().build(&a.scramble, a.seed)?;
+    let default_base = match a.scramble_base {
+        Some(b) => gartowen::core::PowerOfTwoBase::from_base(b)?,
+        None => kind.base(),
+    };
+    let ctx = gartowen::core::BuildContext {
+        seed: a.seed,
+        default_base,
+    };
+    let scrambler = gartowen::registry().build_with(&a.scramble, &ctx)?;
     if !scrambler.supports_width(width) {
         return Err(CliError::Usage(format!(
             "scrambler {} does not support {}-bit words",

@@ -2,6 +2,7 @@
 
 pub mod check;
 pub mod generate;
+pub mod inspect;
 pub mod list;
 pub mod matrices;
 
