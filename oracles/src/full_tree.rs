@@ -14,8 +14,8 @@
 //! permutation of 2^r symbols by the same rule. Only the nodes a query visits are computed.
 
 use gartowen_core::{
-    hash_words, mix64, DigitLayout, Gf2Matrix, Permutation, PowerOfTwoBase, Scrambler, SplitMix64,
-    Width,
+    fisher_yates, hash_words, mix64, DigitLayout, Gf2Matrix, Permutation, PowerOfTwoBase,
+    Scrambler, SplitMix64, Width,
 };
 
 /// Odd multiplier spreading the prefix before mixing (any odd constant is injective mod 2^64).
@@ -72,6 +72,60 @@ impl OwenVariant {
                 images(n, |d| a.apply(d) ^ u)
             }
         }
+    }
+}
+
+impl OwenVariant {
+    /// The image (or preimage) of digit `d` under the node map drawn from `rng`: the same draws
+    /// as [`OwenVariant::draw`], without building a `Permutation`.
+    #[inline]
+    pub fn map_digit(self, bits: u32, rng: &mut SplitMix64, d: u32, inverse: bool) -> u32 {
+        let n = 1u32 << bits;
+        match self {
+            OwenVariant::Uniform => match n {
+                // Fisher–Yates on 2 symbols is one draw j: swap(1, j) swaps iff j = 0.
+                2 => d ^ (rng.bounded(2) == 0) as u32,
+                3..=16 => shuffled_image::<16>(n, rng, d, inverse),
+                _ => shuffled_image::<256>(n, rng, d, inverse),
+            },
+            OwenVariant::CyclicShift => {
+                let u = rng.bounded(n);
+                if inverse {
+                    (d + n - u) % n
+                } else {
+                    (d + u) % n
+                }
+            }
+            OwenVariant::Xor => d ^ rng.bounded(n),
+            OwenVariant::Affine => {
+                let a = Gf2Matrix::random_invertible(bits, rng).expect("bits ≤ 8");
+                let u = rng.bounded(n);
+                if inverse {
+                    a.inverse().expect("invertible").apply(d ^ u)
+                } else {
+                    a.apply(d) ^ u
+                }
+            }
+        }
+    }
+}
+
+/// Image (or preimage) of `d` under a Fisher–Yates shuffle of 0..n on an N-byte stack array.
+#[inline]
+fn shuffled_image<const N: usize>(n: u32, rng: &mut SplitMix64, d: u32, inverse: bool) -> u32 {
+    let mut buf = [0u8; N];
+    let items = &mut buf[..n as usize];
+    for (i, v) in items.iter_mut().enumerate() {
+        *v = i as u8;
+    }
+    fisher_yates(items, rng);
+    if inverse {
+        items
+            .iter()
+            .position(|&v| v as u32 == d)
+            .expect("a permutation") as u32
+    } else {
+        items[d as usize] as u32
     }
 }
 
@@ -136,13 +190,12 @@ impl FullTreeOwen {
         for k in 0..layout.num_digits() {
             let bits = layout.digit_bits(k);
             let mut rng = SplitMix64::new(Self::node_key(dim_key, k, prefix));
-            let sigma = self.variant.draw(bits, &mut rng);
             let d_in = layout.get(x, k);
+            let d_out = self.variant.map_digit(bits, &mut rng, d_in, inverse);
             let (original, mapped) = if inverse {
-                let o = sigma.inverse().apply(d_in);
-                (o, o)
+                (d_out, d_out)
             } else {
-                (d_in, sigma.apply(d_in))
+                (d_in, d_out)
             };
             out = layout.set(out, k, mapped);
             // Navigate by the ORIGINAL digit (recovered first when inverting).

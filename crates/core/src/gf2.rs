@@ -106,15 +106,19 @@ impl Gf2Matrix {
         Gf2Matrix::from_rows(q, &rows[..q as usize]).expect("product stays q×q")
     }
 
-    /// The rank over GF(2), by Gaussian elimination on the rows.
+    /// The rank over GF(2), by Gaussian elimination on the rows (no allocation).
     pub fn rank(&self) -> u32 {
-        let mut rows: Vec<u8> = (0..self.q as u32).map(|i| self.row(i)).collect();
+        let q = self.q as usize;
+        let mut rows = [0u8; 8];
+        for (i, r) in rows.iter_mut().enumerate().take(q) {
+            *r = self.row(i as u32);
+        }
         let mut rank = 0;
-        for col in 0..self.q as u32 {
-            if let Some(p) = (rank..rows.len()).find(|&r| (rows[r] >> col) & 1 == 1) {
+        for col in 0..q {
+            if let Some(p) = (rank..q).find(|&r| (rows[r] >> col) & 1 == 1) {
                 rows.swap(rank, p);
                 let pivot = rows[rank];
-                for (r, row) in rows.iter_mut().enumerate() {
+                for (r, row) in rows.iter_mut().enumerate().take(q) {
                     if r != rank && (*row >> col) & 1 == 1 {
                         *row ^= pivot;
                     }
@@ -150,19 +154,25 @@ impl Gf2Matrix {
         Some(Gf2Matrix::from_rows(q as u32, &rows).expect("inverse stays q×q"))
     }
 
-    /// A uniformly random invertible q×q matrix: uniform random bits, rejected until invertible.
+    /// A uniformly random invertible q×q matrix: uniform random bits (one 64-bit draw per
+    /// try, row i from byte i), rejected until invertible. No allocation.
     pub fn random_invertible(q: u32, rng: &mut SplitMix64) -> Result<Gf2Matrix, CoreError> {
-        Gf2Matrix::identity(q)?;
-        let mask = if q == 8 {
+        if !(1..=8).contains(&q) {
+            return Err(CoreError::InvalidMatrix {
+                reason: format!("size {q} is not in 1..=8"),
+            });
+        }
+        let col_mask = (((1u32 << q) - 1) as u8) as u64 * 0x0101_0101_0101_0101;
+        let used = if q == 8 {
             u64::MAX
         } else {
             (1u64 << (8 * q)) - 1
         };
-        let col_mask = ((1u32 << q) - 1) as u8;
         loop {
-            let raw = rng.next_u64() & mask;
-            let rows: Vec<u8> = (0..q).map(|i| (raw >> (8 * i)) as u8 & col_mask).collect();
-            let m = Gf2Matrix::from_rows(q, &rows)?;
+            let m = Gf2Matrix {
+                q: q as u8,
+                rows: rng.next_u64() & col_mask & used,
+            };
             if m.is_invertible() {
                 return Ok(m);
             }

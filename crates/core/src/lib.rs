@@ -20,7 +20,7 @@ pub use error::CoreError;
 pub use float::{word_from_f64, word_to_f32, word_to_f64};
 pub use gf2::Gf2Matrix;
 pub use hash::{derive_seed, hash_words, mix64, SplitMix64};
-pub use perm::Permutation;
+pub use perm::{fisher_yates, Permutation};
 pub use registry::{BuildContext, Registry, ScramblerRequest, ScramblerSpec};
 pub use scrambler::{Identity, Scrambler};
 pub use width::Width;

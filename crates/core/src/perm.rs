@@ -67,13 +67,11 @@ impl Permutation {
         Ok(p)
     }
 
-    /// Fisher–Yates in place: for i from n−1 down to 1 swap entry i with a uniform j ≤ i.
+    /// Fisher–Yates in place (see [`fisher_yates`]).
     #[inline]
     pub fn shuffle(&mut self, rng: &mut SplitMix64) {
-        for i in (1..self.n as usize).rev() {
-            let j = rng.bounded(i as u32 + 1) as usize;
-            self.map.swap(i, j);
-        }
+        let n = self.len();
+        fisher_yates(&mut self.map[..n], rng);
     }
 
     /// The number of symbols n.
@@ -189,6 +187,16 @@ impl Permutation {
             rank = rank * (n - i) as u64 + smaller_later;
         }
         rank
+    }
+}
+
+/// Fisher–Yates in place: for i from len−1 down to 1, swap entry i with a uniform j ≤ i
+/// (unbiased draws). Every permutation-drawing path uses this one draw sequence.
+#[inline]
+pub fn fisher_yates(items: &mut [u8], rng: &mut SplitMix64) {
+    for i in (1..items.len()).rev() {
+        let j = rng.bounded(i as u32 + 1) as usize;
+        items.swap(i, j);
     }
 }
 
