@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# The main job on a built-in default: generate the base-16 SZ sequence, Owen-scramble it with the
+# exact oracle, and verify with the net checker that it is still a (0,3,16)-net in base 16 and
+# that the scrambler is a nested scramble in base 16 (and, as the paper predicts, not in base 2).
+# Writes into ${OUT:-out/}; exits non-zero if a verdict is not the expected one.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out="${OUT:-out}"
+mkdir -p "$out"
+cargo build --release -q -p gartowen-cli
+g=target/release/gartowen
+
+$g generate --seq sz16 --dims 16 --log2-n 12 --scramble owen-oracle --seed 1 --format npy -o "$out/sz16_owen.npy"
+$g check "$out/sz16_owen.npy" --base 16 --t 0 --json > "$out/check_sz16_owen.json"
+$g check "$out/sz16_owen.npy" --base 16 --t 0
+$g inspect --scramble owen-oracle --base 16 --width 16 --seed 1
+if $g inspect --scramble owen-oracle:base=16 --base 2 --width 16 --seed 1 > "$out/inspect_base2.txt"; then
+  echo "unexpected: a base-16 Owen scramble passed as binary-nested" >&2
+  exit 1
+fi
+echo "expected: $(head -1 "$out/inspect_base2.txt")"
+echo "reports in $out/"
