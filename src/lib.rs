@@ -2,6 +2,7 @@
 //!
 //! This facade re-exports the workspace crates and assembles the one scrambler [`registry`].
 
+pub use gartowen_art as art;
 pub use gartowen_core as core;
 pub use gartowen_netcheck as netcheck;
 pub use gartowen_oracles as oracles;
@@ -12,7 +13,10 @@ use gartowen_core::Registry;
 /// Every scrambler gartowen knows, in one list; cross-checks iterate over it.
 pub fn registry() -> Registry {
     let mut r = Registry::with_core();
-    for spec in gartowen_oracles::registry::specs() {
+    for spec in gartowen_oracles::registry::specs()
+        .into_iter()
+        .chain(gartowen_art::registry::specs())
+    {
         r.add(spec);
     }
     r

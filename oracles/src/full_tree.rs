@@ -256,3 +256,21 @@ impl Scrambler for FullTreeOwen {
         self.run(y, width, dim, true)
     }
 }
+
+/// Applies the nested scramble whose node (depth k, original prefix p) permutation is
+/// `node(k, p)`: the plain tree walk, digit by digit, that every fast scrambler must equal when
+/// driven by its own node permutations (the explicit-tree bridge).
+pub fn scramble_with_nodes(
+    x: u64,
+    width: Width,
+    base: PowerOfTwoBase,
+    node: impl Fn(u32, u64) -> Permutation,
+) -> u64 {
+    let layout = DigitLayout::new(width, base);
+    let mut out = 0u64;
+    for k in 0..layout.num_digits() {
+        let sigma = node(k, layout.prefix(x, k));
+        out = layout.set(out, k, sigma.apply(layout.get(x, k)));
+    }
+    out
+}

@@ -7,4 +7,4 @@ pub mod full_tree;
 pub mod inspector;
 pub mod registry;
 
-pub use full_tree::{FullTreeOwen, OwenVariant};
+pub use full_tree::{scramble_with_nodes, FullTreeOwen, OwenVariant};

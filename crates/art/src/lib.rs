@@ -1,0 +1,16 @@
+//! ART-Owen scrambling in bases 2^q (`DESIGN.md` §3.2–3.4): the Thue–Morse ART grammar, the
+//! ART-Owen family (binary, Q-ART, base 8, base 16, matrix, translation-only) and hash-based
+//! peers, all behind the shared `Scrambler` trait.
+//!
+//! This is gartowen's reconstruction from the papers' text, frozen by golden vectors; it is not
+//! the authors' code.
+
+pub mod engine;
+pub mod grammar;
+pub mod peers;
+pub mod registry;
+pub mod variants;
+
+pub use engine::ArtOwen;
+pub use grammar::Grammar;
+pub use variants::ArtVariant;

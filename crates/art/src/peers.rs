@@ -1,0 +1,166 @@
+//! Hash-based peers (`DESIGN.md` §3.4), for comparison and not as references: Laine–Karras
+//! hashing on reversed bits, the improved LK hash, and a per-bit hashed binary Owen scramble.
+//! Each dimension's seed is `hash_words([seed, dim])`.
+//!
+//! The LK-style hashes mix only from low to high bits of the bit-reversed word, so output bit k
+//! depends only on input bits 0..=k: they are binary nested scrambles, but their node
+//! permutations are not independent uniform flips. They act on 32-bit words (the constants are
+//! 32-bit); the per-bit Owen scramble works at any width.
+
+use gartowen_core::{hash_words, mix64, PowerOfTwoBase, Scrambler, Width};
+
+/// Laine–Karras style permutation of a bit-reversed 32-bit word (the classic constants).
+#[inline(always)]
+pub fn laine_karras(mut x: u32, seed: u32) -> u32 {
+    x = x.wrapping_add(seed);
+    x ^= x.wrapping_mul(0x6c50_b47c);
+    x ^= x.wrapping_mul(0xb82f_1e52);
+    x ^= x.wrapping_mul(0xc7af_e638);
+    x ^= x.wrapping_mul(0x8d22_f6e6);
+    x
+}
+
+/// The improved LK hash (better avalanche among low bits), on a bit-reversed 32-bit word.
+#[inline(always)]
+pub fn improved_lk(mut x: u32, seed: u32) -> u32 {
+    x ^= x.wrapping_mul(0x3d20_adea);
+    x = x.wrapping_add(seed);
+    x = x.wrapping_mul((seed >> 16) | 1);
+    x ^= x.wrapping_mul(0x0552_6c56);
+    x ^= x.wrapping_mul(0x53a2_2864);
+    x
+}
+
+/// Which LK hash a [`LkHash`] uses.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LkFlavor {
+    /// The original Laine–Karras constants.
+    Classic,
+    /// The improved hash.
+    Improved,
+}
+
+/// y = reverse(hash(reverse(x), seed_dim)): a binary nested scramble of 32-bit words.
+#[derive(Debug, Clone)]
+pub struct LkHash {
+    seed: u64,
+    flavor: LkFlavor,
+}
+
+impl LkHash {
+    /// The LK scrambler with `seed`.
+    pub fn new(flavor: LkFlavor, seed: u64) -> Self {
+        LkHash { seed, flavor }
+    }
+
+    #[inline(always)]
+    fn dim_seed(&self, dim: u32) -> u32 {
+        hash_words(&[self.seed, dim as u64]) as u32
+    }
+}
+
+impl Scrambler for LkHash {
+    fn name(&self) -> String {
+        match self.flavor {
+            LkFlavor::Classic => "lk-hash".into(),
+            LkFlavor::Improved => "lk-hash-improved".into(),
+        }
+    }
+    fn base(&self) -> PowerOfTwoBase {
+        PowerOfTwoBase::B2
+    }
+    fn claims_nested_uniform(&self) -> bool {
+        false
+    }
+    fn supports_width(&self, width: Width) -> bool {
+        width == Width::W32
+    }
+    #[inline]
+    fn scramble(&self, x: u64, _width: Width, dim: u32) -> u64 {
+        self.scramble_u32(x as u32, dim) as u64
+    }
+    #[inline]
+    fn scramble_u32(&self, x: u32, dim: u32) -> u32 {
+        let s = self.dim_seed(dim);
+        let r = x.reverse_bits();
+        match self.flavor {
+            LkFlavor::Classic => laine_karras(r, s),
+            LkFlavor::Improved => improved_lk(r, s),
+        }
+        .reverse_bits()
+    }
+    fn unscramble(&self, y: u64, _width: Width, dim: u32) -> u64 {
+        // The hash is a bijection that is triangular in reversed bits: recover input bits from
+        // the lowest reversed bit up, each fixed by the bits below it.
+        let target = (y as u32).reverse_bits();
+        let s = self.dim_seed(dim);
+        let h = |v: u32| match self.flavor {
+            LkFlavor::Classic => laine_karras(v, s),
+            LkFlavor::Improved => improved_lk(v, s),
+        };
+        let mut v = 0u32;
+        for bit in 0..32 {
+            let mask = if bit == 31 {
+                u32::MAX
+            } else {
+                (1u32 << (bit + 1)) - 1
+            };
+            if h(v) & mask != target & mask {
+                v |= 1 << bit;
+            }
+        }
+        v.reverse_bits() as u64
+    }
+}
+
+/// A per-bit hashed binary Owen scramble: bit k flips iff the low bit of
+/// mix64(dim_key ⊕ mix64((k << 58) ⊕ prefix_k)) is set, where prefix_k is the input's top k bits.
+#[derive(Debug, Clone)]
+pub struct PerBitOwen {
+    seed: u64,
+}
+
+impl PerBitOwen {
+    /// The scrambler with `seed`.
+    pub fn new(seed: u64) -> Self {
+        PerBitOwen { seed }
+    }
+
+    #[inline(always)]
+    fn flip(dim_key: u64, k: u32, prefix: u64) -> u64 {
+        mix64(dim_key ^ mix64(((k as u64) << 58) ^ prefix)) & 1
+    }
+}
+
+impl Scrambler for PerBitOwen {
+    fn name(&self) -> String {
+        "owen-per-bit-hash".into()
+    }
+    fn base(&self) -> PowerOfTwoBase {
+        PowerOfTwoBase::B2
+    }
+    fn claims_nested_uniform(&self) -> bool {
+        true
+    }
+    fn scramble(&self, x: u64, width: Width, dim: u32) -> u64 {
+        let w = width.bits();
+        let key = hash_words(&[self.seed, dim as u64]);
+        let mut y = x;
+        for k in 0..w {
+            let prefix = if k == 0 { 0 } else { x >> (w - k) };
+            y ^= Self::flip(key, k, prefix) << (w - 1 - k);
+        }
+        y
+    }
+    fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
+        let w = width.bits();
+        let key = hash_words(&[self.seed, dim as u64]);
+        let mut x = 0u64;
+        for k in 0..w {
+            let prefix = if k == 0 { 0 } else { x >> (w - k) };
+            let bit = ((y >> (w - 1 - k)) & 1) ^ Self::flip(key, k, prefix);
+            x |= bit << (w - 1 - k);
+        }
+        x
+    }
+}

@@ -1,0 +1,159 @@
+//! Registry entries: every ART-Owen variant (`NAME[:table=SYMBOLS]`, default 256 symbols) and
+//! the hash peers.
+
+use crate::peers::{LkFlavor, LkHash, PerBitOwen};
+use crate::{ArtOwen, ArtVariant};
+use gartowen_core::registry::BuildContext;
+use gartowen_core::{CoreError, PowerOfTwoBase, Scrambler, ScramblerRequest, ScramblerSpec};
+
+/// Default alphabet size (L = 81).
+pub const DEFAULT_SYMBOLS: usize = 256;
+
+/// The variant a registry name stands for.
+pub fn variant_of(name: &str) -> Option<ArtVariant> {
+    let q_of = |rest: &str| rest.parse::<u32>().ok().filter(|q| (1..=8).contains(q));
+    match name {
+        "art-owen-2" => Some(ArtVariant::ArtOwen2),
+        "q-art-4" => Some(ArtVariant::QArt4),
+        "art-owen-8p" => Some(ArtVariant::ArtOwen8P),
+        "art-owen-16p" => Some(ArtVariant::ArtOwen16P),
+        _ => {
+            if let Some(rest) = name.strip_prefix("art-owen-m") {
+                q_of(rest).map(ArtVariant::Matrix)
+            } else {
+                name.strip_prefix("art-owen-t")
+                    .and_then(q_of)
+                    .map(ArtVariant::Translation)
+            }
+        }
+    }
+}
+
+fn build_art(req: &ScramblerRequest, ctx: &BuildContext) -> Result<Box<dyn Scrambler>, CoreError> {
+    req.allow_only(&["table"])?;
+    let variant = variant_of(&req.name).expect("registered names parse");
+    let symbols = match req.option("table") {
+        None => DEFAULT_SYMBOLS,
+        Some(t) => t.parse().map_err(|_| CoreError::InvalidOption {
+            scrambler: req.name.clone(),
+            option: "table".into(),
+            reason: format!("'{t}' is not a number of symbols"),
+        })?,
+    };
+    ArtOwen::new(variant, symbols, ctx.seed)
+        .map(|s| Box::new(s) as Box<dyn Scrambler>)
+        .map_err(|e| CoreError::InvalidOption {
+            scrambler: req.name.clone(),
+            option: "table".into(),
+            reason: e.to_string(),
+        })
+}
+
+fn build_lk(req: &ScramblerRequest, ctx: &BuildContext) -> Result<Box<dyn Scrambler>, CoreError> {
+    req.allow_only(&[])?;
+    let flavor = if req.name == "lk-hash" {
+        LkFlavor::Classic
+    } else {
+        LkFlavor::Improved
+    };
+    Ok(Box::new(LkHash::new(flavor, ctx.seed)))
+}
+
+fn build_per_bit(
+    req: &ScramblerRequest,
+    ctx: &BuildContext,
+) -> Result<Box<dyn Scrambler>, CoreError> {
+    req.allow_only(&[])?;
+    Ok(Box::new(PerBitOwen::new(ctx.seed)))
+}
+
+const MATRIX_NAMES: [&str; 8] = [
+    "art-owen-m1",
+    "art-owen-m2",
+    "art-owen-m3",
+    "art-owen-m4",
+    "art-owen-m5",
+    "art-owen-m6",
+    "art-owen-m7",
+    "art-owen-m8",
+];
+const TRANSLATION_NAMES: [&str; 8] = [
+    "art-owen-t1",
+    "art-owen-t2",
+    "art-owen-t3",
+    "art-owen-t4",
+    "art-owen-t5",
+    "art-owen-t6",
+    "art-owen-t7",
+    "art-owen-t8",
+];
+
+/// Every ART and peer entry.
+pub fn specs() -> Vec<ScramblerSpec> {
+    let art = |name: &'static str, summary: &'static str| {
+        let v = variant_of(name).expect("known");
+        ScramblerSpec {
+            name,
+            default_base: PowerOfTwoBase::from_q(v.q()).expect("q ≤ 8"),
+            claims_nested_uniform: v.claims_nested_uniform(),
+            summary,
+            build: build_art,
+        }
+    };
+    let mut out = vec![
+        art(
+            "art-owen-2",
+            "binary ART-Owen: XOR codes down the Thue–Morse tree; :table=SYMBOLS",
+        ),
+        art(
+            "q-art-4",
+            "Q-ART base 4: psi in GL(2,2) plus codes; :table=SYMBOLS",
+        ),
+        art(
+            "art-owen-8p",
+            "base-8 ART-Owen: packed permutation reused as codes; :table=SYMBOLS",
+        ),
+        art(
+            "art-owen-16p",
+            "base-16 ART-Owen: packed permutation plus 32-bit code; :table=SYMBOLS",
+        ),
+    ];
+    for name in MATRIX_NAMES {
+        out.push(art(
+            name,
+            "ART-Owen with psi uniform in GL(q,2) plus codes; :table=SYMBOLS",
+        ));
+    }
+    for name in TRANSLATION_NAMES {
+        out.push(art(
+            name,
+            "ART-Owen translation only (nested digital shift); :table=SYMBOLS",
+        ));
+    }
+    for (name, summary) in [
+        (
+            "lk-hash",
+            "Laine–Karras hash on reversed bits (32-bit words)",
+        ),
+        (
+            "lk-hash-improved",
+            "improved LK hash on reversed bits (32-bit words)",
+        ),
+    ] {
+        out.push(ScramblerSpec {
+            name,
+            default_base: PowerOfTwoBase::B2,
+            claims_nested_uniform: false,
+            summary,
+            build: build_lk,
+        });
+    }
+    out.push(ScramblerSpec {
+        name: "owen-per-bit-hash",
+        default_base: PowerOfTwoBase::B2,
+        claims_nested_uniform: true,
+        summary: "binary Owen scramble with one hashed flip per bit (pbrt-style)",
+        build: build_per_bit,
+    });
+    out
+}

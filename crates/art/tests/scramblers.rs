@@ -1,0 +1,140 @@
+//! Every ART variant is a nested scramble (inspector, every root symbol of a small table),
+//! agrees bit for bit with the oracle's tree walk driven by its own node permutations, and
+//! inverts; the hash peers are checked the same way.
+
+use gartowen_art::peers::{LkFlavor, LkHash, PerBitOwen};
+use gartowen_art::{ArtOwen, ArtVariant};
+use gartowen_core::{mix64, PowerOfTwoBase, Scrambler, Width};
+use gartowen_oracles::inspector::{inspect_exhaustive, inspect_probes};
+use gartowen_oracles::scramble_with_nodes;
+
+fn all_variants() -> Vec<ArtVariant> {
+    let mut v = vec![
+        ArtVariant::ArtOwen2,
+        ArtVariant::QArt4,
+        ArtVariant::ArtOwen8P,
+        ArtVariant::ArtOwen16P,
+    ];
+    v.extend((1..=8).map(ArtVariant::Matrix));
+    v.extend((1..=8).map(ArtVariant::Translation));
+    v
+}
+
+fn base(v: ArtVariant) -> PowerOfTwoBase {
+    PowerOfTwoBase::from_q(v.q()).unwrap()
+}
+
+#[test]
+fn every_variant_and_root_symbol_is_a_nested_scramble_at_16_bits() {
+    let w16 = Width::new(16).unwrap();
+    for v in all_variants() {
+        let s = ArtOwen::new(v, 6, 11).unwrap(); // L = 3: 6 symbols
+        for root in 0..6 {
+            let f = |x: u64| s.scramble_from_root(x, w16, root, false);
+            let r = inspect_exhaustive(&f, w16, base(v), 16);
+            assert!(
+                r.nested_scramble,
+                "{v:?} root {root}: {:?}",
+                r.first_violation
+            );
+            for x in (0..1u64 << 16).step_by(97) {
+                assert_eq!(s.scramble_from_root(f(x), w16, root, true), x);
+            }
+        }
+    }
+}
+
+#[test]
+fn probes_at_32_and_64_bits() {
+    for v in all_variants() {
+        let s = ArtOwen::new(v, 256, 3).unwrap();
+        for width in [Width::W32, Width::W64] {
+            let f = |x: u64| s.scramble(x, width, 7);
+            let r = inspect_probes(&f, width, base(v), 64, 300, 5);
+            assert!(
+                r.nested_scramble,
+                "{v:?} {width:?}: {:?}",
+                r.first_violation
+            );
+        }
+    }
+}
+
+#[test]
+fn explicit_tree_bridge_agrees_bit_for_bit() {
+    for v in all_variants() {
+        let s = ArtOwen::new(v, 44, 21).unwrap();
+        for width in [Width::new(12).unwrap(), Width::W32, Width::W64] {
+            for i in 0..200u64 {
+                let x = mix64(i) & width.mask();
+                let dim = (i % 3) as u32;
+                let walked = scramble_with_nodes(x, width, base(v), |k, p| {
+                    s.node_permutation(width, dim, k, p)
+                });
+                let y = s.scramble(x, width, dim);
+                assert_eq!(walked, y, "{v:?} {width:?} x={x:#x}");
+                assert_eq!(s.unscramble(y, width, dim), x);
+            }
+        }
+    }
+}
+
+#[test]
+fn narrow_words_are_the_top_digits_of_wide_ones() {
+    // Nestedness across widths: when q divides 32, a 32-bit word's scramble is the top half of
+    // the 64-bit scramble of the same value.
+    for v in all_variants().into_iter().filter(|v| 32 % v.q() == 0) {
+        let s = ArtOwen::new(v, 256, 8).unwrap();
+        for i in 0..500u64 {
+            let x = mix64(i) & 0xFFFF_FFFF;
+            assert_eq!(
+                s.scramble(x << 32, Width::W64, 2) >> 32,
+                s.scramble(x, Width::W32, 2),
+                "{v:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn seeds_and_table_sizes_change_the_scramble() {
+    let a = ArtOwen::new(ArtVariant::ArtOwen16P, 256, 1).unwrap();
+    let b = ArtOwen::new(ArtVariant::ArtOwen16P, 256, 2).unwrap();
+    let c = ArtOwen::new(ArtVariant::ArtOwen16P, 44, 1).unwrap();
+    let xs: Vec<u64> = (0..64).map(|i| mix64(i) & 0xFFFF_FFFF).collect();
+    let run = |s: &ArtOwen| {
+        xs.iter()
+            .map(|&x| s.scramble(x, Width::W32, 0))
+            .collect::<Vec<_>>()
+    };
+    assert_ne!(run(&a), run(&b));
+    assert_ne!(run(&a), run(&c));
+    assert!(
+        ArtOwen::new(ArtVariant::ArtOwen2, 45, 1).is_err(),
+        "45 is no alphabet size"
+    );
+    assert!(a.table_bytes() > c.table_bytes());
+}
+
+#[test]
+fn peers_are_binary_nested_bijections() {
+    for flavor in [LkFlavor::Classic, LkFlavor::Improved] {
+        let s = LkHash::new(flavor, 99);
+        let f = |x: u64| s.scramble(x, Width::W32, 1);
+        let r = inspect_probes(&f, Width::W32, PowerOfTwoBase::B2, 32, 2000, 2);
+        assert!(r.nested_scramble, "{flavor:?}: {:?}", r.first_violation);
+        for i in 0..1000u64 {
+            let x = mix64(i) & 0xFFFF_FFFF;
+            assert_eq!(s.unscramble(s.scramble(x, Width::W32, 1), Width::W32, 1), x);
+        }
+        assert!(!s.supports_width(Width::W64));
+    }
+    let p = PerBitOwen::new(5);
+    let w16 = Width::new(16).unwrap();
+    let f = |x: u64| p.scramble(x, w16, 0);
+    assert!(inspect_exhaustive(&f, w16, PowerOfTwoBase::B2, 16).nested_scramble);
+    for i in 0..1000u64 {
+        let x = mix64(i);
+        assert_eq!(p.unscramble(p.scramble(x, Width::W64, 3), Width::W64, 3), x);
+    }
+}
