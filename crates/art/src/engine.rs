@@ -27,7 +27,7 @@ const ROOT_TAG: u64 = 0x726f_6f74; // "root"
 pub struct ArtOwen {
     variant: ArtVariant,
     seed: u64,
-    grammar: Grammar,
+    grammar: std::sync::Arc<Grammar>,
     /// Top-aligned translation code per symbol.
     codes: Vec<u64>,
     /// ψ images per symbol (s·b + d), empty for identity.
@@ -45,7 +45,7 @@ impl ArtOwen {
         seed: u64,
     ) -> Result<Self, crate::grammar::GrammarError> {
         let len = crate::grammar::length_for_size(symbols)?;
-        let grammar = Grammar::new(len, variant.q())?;
+        let grammar = Grammar::shared(len, variant.q())?;
         let mut rng = SplitMix64::new(derive_seed(seed, TABLE_TAG));
         let b = 1usize << variant.q();
         let mut codes = Vec::with_capacity(symbols);

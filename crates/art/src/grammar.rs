@@ -220,6 +220,23 @@ impl Grammar {
         })
     }
 
+    /// The grammar for (L, q) from a process-wide cache: grammars do not depend on seeds, so
+    /// scramblers built for many seeds share one.
+    pub fn shared(len: usize, q: u32) -> Result<std::sync::Arc<Grammar>, GrammarError> {
+        use std::sync::{Arc, Mutex, OnceLock};
+        static CACHE: OnceLock<Mutex<HashMap<(usize, u32), Arc<Grammar>>>> = OnceLock::new();
+        let cache = CACHE.get_or_init(|| Mutex::new(HashMap::new()));
+        if let Some(g) = cache.lock().expect("cache lock").get(&(len, q)) {
+            return Ok(g.clone());
+        }
+        let g = Arc::new(Grammar::new(len, q)?);
+        cache
+            .lock()
+            .expect("cache lock")
+            .insert((len, q), g.clone());
+        Ok(g)
+    }
+
     /// The factor length L.
     pub fn factor_len(&self) -> usize {
         self.len
