@@ -18,9 +18,23 @@ use gartowen_core::{
 };
 
 /// Tag for the table stream (`derive_seed(seed, TABLE_TAG)`).
-const TABLE_TAG: u64 = 0x7461_626c_65; // "table"
+const TABLE_TAG: u64 = 0x0074_6162_6c65; // "table"
 /// Tag for root selection (`hash_words([seed, dim, ROOT_TAG])`).
 const ROOT_TAG: u64 = 0x726f_6f74; // "root"
+
+/// Precomputed effect of `digits` consecutive digits (one step) from a symbol.
+#[derive(Debug, Clone, Copy, Default)]
+struct Step {
+    /// Σ_j T[s_j] >> (q·j) over the step's symbols, in the step's relative frame.
+    carry: u64,
+    /// The symbol after the step.
+    next: u32,
+    /// Output bits of the step before ancestors' translations: ψ(v_i) ⊕ in-step codes.
+    local: u32,
+}
+
+/// Number of dimensions whose root symbol is precomputed.
+const CACHED_ROOTS: u32 = 256;
 
 /// An ART-Owen scrambler: grammar, per-symbol ψ and codes, and the seed that chose them.
 #[derive(Debug, Clone)]
@@ -34,6 +48,15 @@ pub struct ArtOwen {
     psi: Vec<u8>,
     /// ψ^{-1} images per symbol.
     psi_inv: Vec<u8>,
+    /// Digits per step (4 bits of input for q ≤ 4, one digit otherwise).
+    step_digits: u32,
+    /// Step table, split by field so the serial symbol chain reads only the compact `next`
+    /// array: index s·2^(q·step_digits) + v.
+    step_next: Vec<u32>,
+    step_local: Vec<u16>,
+    step_carry: Vec<u64>,
+    /// Root symbols of dimensions 0..CACHED_ROOTS.
+    roots: Vec<u32>,
 }
 
 impl ArtOwen {
@@ -59,14 +82,51 @@ impl ArtOwen {
                 psi_inv.extend_from_slice(&inv.as_slice()[..b]);
             }
         }
-        Ok(ArtOwen {
+        let mut art = ArtOwen {
             variant,
             seed,
             grammar,
             codes,
             psi,
             psi_inv,
-        })
+            step_digits: (4 / variant.q()).max(1),
+            step_next: Vec::new(),
+            step_local: Vec::new(),
+            step_carry: Vec::new(),
+            roots: Vec::new(),
+        };
+        art.roots = (0..CACHED_ROOTS).map(|d| art.hashed_root(d)).collect();
+        let steps = art.build_steps();
+        art.step_next = steps.iter().map(|e| e.next).collect();
+        art.step_local = steps.iter().map(|e| e.local as u16).collect();
+        art.step_carry = steps.iter().map(|e| e.carry).collect();
+        Ok(art)
+    }
+
+    /// The step table: for every symbol and every value v of `step_digits` input digits, the
+    /// loop's effect with ancestors' translations left out (they are XOR-ed in at run time).
+    fn build_steps(&self) -> Vec<Step> {
+        let (q, m) = (self.q(), self.step_digits);
+        let bits = q * m;
+        let mut out = Vec::with_capacity((self.grammar.symbols() as usize) << bits);
+        for s0 in 0..self.grammar.symbols() {
+            for v in 0..1u32 << bits {
+                let (mut s, mut g, mut local) = (s0, 0u64, 0u32);
+                for i in 0..m {
+                    let d = (v >> (bits - q * (i + 1))) & ((1 << q) - 1);
+                    g ^= self.codes[s as usize] >> (q * i);
+                    let f = ((g >> (64 - q * (i + 1))) & ((1 << q) - 1)) as u32;
+                    local = (local << q) | (self.psi_apply(s, d) ^ f);
+                    s = self.grammar.child(s, d);
+                }
+                out.push(Step {
+                    carry: g,
+                    next: s,
+                    local,
+                });
+            }
+        }
+        out
     }
 
     /// The variant.
@@ -80,9 +140,54 @@ impl ArtOwen {
     }
 
     /// The root symbol of dimension `dim`: hash of (seed, dim) reduced without bias.
+    #[inline]
     pub fn root(&self, dim: u32) -> u32 {
+        match self.roots.get(dim as usize) {
+            Some(&r) => r,
+            None => self.hashed_root(dim),
+        }
+    }
+
+    fn hashed_root(&self, dim: u32) -> u32 {
         SplitMix64::new(hash_words(&[self.seed, dim as u64, ROOT_TAG]))
             .bounded(self.grammar.symbols())
+    }
+
+    /// The forward scramble through the step table, in the relative frame G = F << q·k (digit
+    /// k at the top of G); digits left after the whole steps go one at a time. Equal to the
+    /// digit-by-digit loop (tested).
+    #[inline]
+    fn forward_fast(&self, x: u64, width: Width, root: u32) -> u64 {
+        let q = self.q();
+        let w = width.bits();
+        let step_bits = q * self.step_digits;
+        let full_digits = w / q;
+        let steps = full_digits / self.step_digits;
+        let (mut s, mut g, mut out) = (root, 0u64, 0u64);
+        let mask = (1u64 << step_bits) - 1;
+        for i in 0..steps {
+            let v = (x >> (w - step_bits * (i + 1))) & mask;
+            let idx = ((s as usize) << step_bits) | v as usize;
+            out = (out << step_bits) | ((self.step_local[idx] as u64) ^ (g >> (64 - step_bits)));
+            g = (g ^ self.step_carry[idx]) << step_bits;
+            s = self.step_next[idx];
+        }
+        // Remaining full digits, then the partial tail digit (translation only).
+        let mut consumed = steps * step_bits;
+        for _ in steps * self.step_digits..full_digits {
+            consumed += q;
+            let d = ((x >> (w - consumed)) & ((1 << q) - 1)) as u32;
+            g ^= self.codes[s as usize];
+            out = (out << q) | (self.psi_apply(s, d) ^ (g >> (64 - q)) as u32) as u64;
+            g <<= q;
+            s = self.grammar.child(s, d);
+        }
+        let r = w % q;
+        if r != 0 {
+            g ^= self.codes[s as usize];
+            out = (out << r) | ((x & ((1 << r) - 1)) ^ (g >> (64 - r)));
+        }
+        out
     }
 
     #[inline(always)]
@@ -110,7 +215,16 @@ impl ArtOwen {
 
     #[inline]
     fn run(&self, x: u64, width: Width, dim: u32, inverse: bool) -> u64 {
-        self.run_from(x, width, self.root(dim), inverse)
+        if inverse {
+            self.run_from(x, width, self.root(dim), true)
+        } else {
+            self.forward_fast(x, width, self.root(dim))
+        }
+    }
+
+    /// The forward scramble by the plain digit-by-digit loop (the reference for the step table).
+    pub fn scramble_digit_by_digit(&self, x: u64, width: Width, dim: u32) -> u64 {
+        self.run_from(x, width, self.root(dim), false)
     }
 
     /// The scramble (or its inverse) starting from root symbol `root` instead of the hashed
@@ -200,7 +314,14 @@ impl Scrambler for ArtOwen {
         self.run(y, width, dim, true)
     }
 
+    /// Everything held: child table, codes, ψ and ψ^{-1} images, and the step table.
     fn table_bytes(&self) -> usize {
-        self.grammar.table_bytes() + self.codes.len() * 8 + self.psi.len() + self.psi_inv.len()
+        self.grammar.table_bytes()
+            + self.codes.len() * 8
+            + self.psi.len()
+            + self.psi_inv.len()
+            + self.step_next.len() * 4
+            + self.step_local.len() * 2
+            + self.step_carry.len() * 8
     }
 }

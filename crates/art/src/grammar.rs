@@ -181,6 +181,9 @@ pub fn length_for_size(symbols: usize) -> Result<usize, GrammarError> {
     }
 }
 
+/// Grammars by (L, q), shared across scramblers.
+type GrammarCache = HashMap<(usize, u32), std::sync::Arc<Grammar>>;
+
 /// Child tables of the ART grammar for branching 2^q: `child(s, d)` for every symbol and digit.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Grammar {
@@ -224,7 +227,7 @@ impl Grammar {
     /// scramblers built for many seeds share one.
     pub fn shared(len: usize, q: u32) -> Result<std::sync::Arc<Grammar>, GrammarError> {
         use std::sync::{Arc, Mutex, OnceLock};
-        static CACHE: OnceLock<Mutex<HashMap<(usize, u32), Arc<Grammar>>>> = OnceLock::new();
+        static CACHE: OnceLock<Mutex<GrammarCache>> = OnceLock::new();
         let cache = CACHE.get_or_init(|| Mutex::new(HashMap::new()));
         if let Some(g) = cache.lock().expect("cache lock").get(&(len, q)) {
             return Ok(g.clone());

@@ -138,3 +138,28 @@ fn peers_are_binary_nested_bijections() {
         assert_eq!(p.unscramble(p.scramble(x, Width::W64, 3), Width::W64, 3), x);
     }
 }
+
+#[test]
+fn step_table_path_equals_the_digit_by_digit_loop() {
+    for v in all_variants() {
+        for symbols in [6usize, 256] {
+            let s = ArtOwen::new(v, symbols, 31).unwrap();
+            for width in [
+                Width::new(12).unwrap(),
+                Width::new(13).unwrap(),
+                Width::W32,
+                Width::W64,
+            ] {
+                for i in 0..300u64 {
+                    let x = mix64(i ^ 0x55) & width.mask();
+                    let dim = (i % 300) as u32; // past the cached roots too
+                    assert_eq!(
+                        s.scramble(x, width, dim),
+                        s.scramble_digit_by_digit(x, width, dim),
+                        "{v:?} symbols={symbols} {width:?} x={x:#x}"
+                    );
+                }
+            }
+        }
+    }
+}
