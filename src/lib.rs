@@ -4,6 +4,7 @@
 
 pub use gartowen_art as art;
 pub use gartowen_core as core;
+pub use gartowen_discrepancy as discrepancy;
 pub use gartowen_netcheck as netcheck;
 pub use gartowen_oracles as oracles;
 pub use gartowen_seq as seq;
