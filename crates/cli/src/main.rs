@@ -25,6 +25,7 @@ enum Command {
     Generate(commands::generate::GenerateArgs),
     Check(commands::check::CheckArgs),
     Inspect(commands::inspect::InspectArgs),
+    Discrepancy(commands::discrepancy::DiscrepancyArgs),
     Matrices(commands::matrices::MatricesArgs),
     List(commands::list::ListArgs),
 }
@@ -35,6 +36,7 @@ fn main() -> ExitCode {
         Command::Generate(a) => commands::generate::run(a),
         Command::Check(a) => commands::check::run(a),
         Command::Inspect(a) => commands::inspect::run(a),
+        Command::Discrepancy(a) => commands::discrepancy::run(a),
         Command::Matrices(a) => commands::matrices::run(a),
         Command::List(a) => commands::list::run(a),
     };

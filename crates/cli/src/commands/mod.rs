@@ -1,6 +1,7 @@
 //! One module per subcommand.
 
 pub mod check;
+pub mod discrepancy;
 pub mod generate;
 pub mod inspect;
 pub mod list;

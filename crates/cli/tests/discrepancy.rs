@@ -1,0 +1,105 @@
+//! End-to-end `gartowen discrepancy`: JSON fields, methods agree, bad input exits 2.
+
+use std::process::{Command, Output};
+
+fn gartowen(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_gartowen"))
+        .args(args)
+        .output()
+        .expect("runs")
+}
+
+fn json(o: &Output) -> serde_json::Value {
+    serde_json::from_slice(&o.stdout)
+        .unwrap_or_else(|_| panic!("{}", String::from_utf8_lossy(&o.stderr)))
+}
+
+#[test]
+fn methods_agree_and_json_carries_the_fields() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("s.npy");
+    let f = f.to_str().unwrap();
+    let g = [
+        "generate",
+        "--seq",
+        "sobol",
+        "--dims",
+        "3",
+        "--log2-n",
+        "9",
+        "--scramble",
+        "owen-oracle",
+        "--format",
+        "npy",
+        "-o",
+        f,
+    ];
+    assert!(gartowen(&g).status.success());
+    for kind in ["l2star", "cd", "wd", "gl2"] {
+        let exact = json(&gartowen(&[
+            "discrepancy",
+            f,
+            "--kind",
+            kind,
+            "--method",
+            "exact",
+            "--json",
+        ]));
+        let comp = json(&gartowen(&[
+            "discrepancy",
+            f,
+            "--kind",
+            kind,
+            "--method",
+            "compensated",
+            "--json",
+        ]));
+        let auto = json(&gartowen(&["discrepancy", f, "--kind", kind, "--json"]));
+        let (e, c) = (
+            exact["result"]["value"].as_f64().unwrap(),
+            comp["result"]["value"].as_f64().unwrap(),
+        );
+        assert!(((c - e) / e).abs() <= 1e-12, "{kind}: {c} vs {e}");
+        assert_eq!(exact["result"]["squared"], true);
+        assert_eq!(exact["result"]["kind"], kind);
+        assert_eq!(exact["result"]["method"], "exact");
+        let r = exact["result"]["exact"].as_str().unwrap();
+        let (num, den) = r.split_once('/').unwrap();
+        let approx = num.parse::<f64>().unwrap() / den.parse::<f64>().unwrap();
+        assert!(
+            ((approx - e) / e).abs() < 1e-12,
+            "the rational string is the value"
+        );
+        assert!(auto["result"]["rel_error_bound"].as_f64().unwrap() <= 1e-12);
+        assert!(auto["result"]["seconds"].as_f64().unwrap() >= 0.0);
+    }
+    let root = json(&gartowen(&["discrepancy", f, "--root", "--json"]));
+    let sq = json(&gartowen(&["discrepancy", f, "--json"]));
+    assert_eq!(root["result"]["squared"], false);
+    let (r, s) = (
+        root["result"]["value"].as_f64().unwrap(),
+        sq["result"]["value"].as_f64().unwrap(),
+    );
+    assert!((r * r - s).abs() <= 1e-15 * s);
+    let pairs = json(&gartowen(&["discrepancy", f, "--pairs", "all", "--json"]));
+    assert_eq!(pairs["pairs"].as_array().unwrap().len(), 3);
+}
+
+#[test]
+fn bad_input_and_usage_exit_2() {
+    let dir = tempfile::tempdir().unwrap();
+    let bad = dir.path().join("bad.csv");
+    std::fs::write(&bad, "0.5,nan\n").unwrap();
+    let ok = dir.path().join("ok.csv");
+    std::fs::write(&ok, "0.5,0.25,0.125\n0.75,0.5,0.0\n").unwrap();
+    for args in [
+        vec!["discrepancy", bad.to_str().unwrap()],
+        vec!["discrepancy", ok.to_str().unwrap(), "--kind", "md"],
+        vec!["discrepancy", ok.to_str().unwrap(), "--method", "fast"],
+        vec!["discrepancy", "/nonexistent.npy"],
+    ] {
+        let o = gartowen(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert!(!String::from_utf8_lossy(&o.stderr).contains("panicked"));
+    }
+}
