@@ -60,23 +60,36 @@ fn pair_sum_2d(points: Points) -> BigUint {
     let mut order: Vec<usize> = (0..n).collect();
     order.sort_unstable_by_key(|&i| xs[i]);
     let mut tree = Fenwick::new(sorted_y.len());
-    let (mut total_count, mut total_sum) = (0u64, 0u128);
-    let mut off = BigUint::default();
-    let mut diag = BigUint::default();
+    let mut total_sum = 0u128;
+    // u128 accumulators while they cannot overflow (W ≤ 32 and N ≤ 2^30 keep every term below
+    // 2^105); otherwise, and on any checked overflow, the terms go to big integers.
+    let (mut off_small, mut diag_small) = (0u128, 0u128);
+    let (mut off_big, mut diag_big) = (BigUint::default(), BigUint::default());
     for &j in &order {
         let (xj, yj) = (one - xs[j] as u128, one - ys[j] as u128);
         let r = rank(ys[j]);
         let (le_count, le_sum) = tree.prefix(r);
         let greater = total_sum - le_sum;
-        // Σ over earlier i of (2^W − max(y_i, y_j)).
-        let inner = BigUint::from(le_count) * BigUint::from(yj) + BigUint::from(greater);
-        off += inner * BigUint::from(xj);
-        diag += BigUint::from(xj) * BigUint::from(yj);
+        // Σ over earlier i of (2^W − max(y_i, y_j)), times (2^W − x_j).
+        let small = (le_count as u128)
+            .checked_mul(yj)
+            .and_then(|v| v.checked_add(greater))
+            .and_then(|inner| inner.checked_mul(xj))
+            .and_then(|term| off_small.checked_add(term))
+            .zip(xj.checked_mul(yj).and_then(|dg| diag_small.checked_add(dg)));
+        match small {
+            Some((o, d)) => (off_small, diag_small) = (o, d),
+            None => {
+                let inner = BigUint::from(le_count) * BigUint::from(yj) + BigUint::from(greater);
+                off_big += inner * BigUint::from(xj);
+                diag_big += BigUint::from(xj) * BigUint::from(yj);
+            }
+        }
         tree.add(r, yj);
-        total_count += 1;
         total_sum += yj;
     }
-    debug_assert_eq!(total_count as usize, n);
+    let off = off_big + BigUint::from(off_small);
+    let diag = diag_big + BigUint::from(diag_small);
     diag + (off << 1usize)
 }
 
