@@ -28,7 +28,10 @@ fn t1_factorization_over_s4_and_s8() {
                 let psi2: Vec<u32> = (0..n as u32).map(|x| p.apply(x) ^ b2).collect();
                 assert_eq!(psi2[0] == 0, b2 == b);
             }
-            assert!(pairs.insert((psi.clone(), b)), "the map π ↦ (ψ, B) is injective");
+            assert!(
+                pairs.insert((psi.clone(), b)),
+                "the map π ↦ (ψ, B) is injective"
+            );
             linear += (0..n).all(|a| (0..n).all(|c| psi[a ^ c] == psi[a] ^ psi[c])) as usize;
         }
         let fact = |k: usize| (1..=k).product::<usize>();
@@ -36,7 +39,11 @@ fn t1_factorization_over_s4_and_s8() {
         assert_eq!(pairs.len(), n * fact(n - 1), "b! = b·(b − 1)!");
         // Affine maps are those with linear ψ: |AGL(q,2)| = b·|GL(q,2)|; for b = 4 that is all of S_4.
         assert_eq!(linear, n * gl_size, "|AGL(q,2)| = b·|GL(q,2)|");
-        assert_eq!(linear == perms.len(), n == 4, "AGL(2,2) = S_4, AGL(3,2) ≠ S_8");
+        assert_eq!(
+            linear == perms.len(),
+            n == 4,
+            "AGL(2,2) = S_4, AGL(3,2) ≠ S_8"
+        );
     }
 }
 
@@ -62,7 +69,10 @@ fn t5_counterexample_through_the_rust_checker() {
     assert_eq!((f.shape.clone(), f.count), (vec![1, 1], 2));
     // The Coq proof exhibits the box [0,1/2) × [0,1/2); it holds two points too.
     let rows: Vec<Vec<u64>> = (0..4).map(|i| after.point(i)).collect();
-    assert_eq!(gartowen::oracles::box_counting::count_in_box(&rows, 8, 2, &[1, 1], &[0, 0]), 2);
+    assert_eq!(
+        gartowen::oracles::box_counting::count_in_box(&rows, 8, 2, &[1, 1], &[0, 0]),
+        2
+    );
     // The map is a base-4 nested scramble, and not a binary one.
     assert!(inspect_exhaustive(&scramble, w, PowerOfTwoBase::B4, 4).nested_scramble);
     assert!(!inspect_exhaustive(&scramble, w, PowerOfTwoBase::B2, 8).nested_scramble);

@@ -56,6 +56,47 @@ fn product(kind: Kind, a: &[f64], b: &[f64], exact: bool) -> Dd {
     }
 }
 
+/// Columns per product block: products of a row with 256 later points are formed column by
+/// column (vectorizable), summed pairwise in f64, and the block sum is added in double-double.
+const BLOCK: usize = 256;
+
+/// Pairwise sum (fixed tree, so deterministic); relative error ≤ ⌈log2 len⌉·ε.
+fn pairwise(v: &[f64]) -> f64 {
+    if v.len() <= 8 {
+        v.iter().sum()
+    } else {
+        let h = v.len() / 2;
+        pairwise(&v[..h]) + pairwise(&v[h..])
+    }
+}
+
+/// Σ_{j > i} Π_k p(x_ik, x_jk) for d > EXACT_PRODUCT_DIMS, from column-major coordinates.
+#[inline(always)]
+fn off_diagonal_blocks(
+    pair: impl Fn(f64, f64) -> f64,
+    a: &[f64],
+    cols: &[Vec<f64>],
+    i: usize,
+    n: usize,
+    buf: &mut [f64; BLOCK],
+) -> Dd {
+    let mut off = Dd::default();
+    let mut start = i + 1;
+    while start < n {
+        let len = BLOCK.min(n - start);
+        let prod = &mut buf[..len];
+        prod.fill(1.0);
+        for (k, &ak) in a.iter().enumerate() {
+            for (p, &y) in prod.iter_mut().zip(&cols[k][start..start + len]) {
+                *p *= pair(ak, y);
+            }
+        }
+        off = off.add_f64(pairwise(prod));
+        start += len;
+    }
+    off
+}
+
 /// D² by compensated sums.
 pub fn compensated(points: Points, kind: Kind) -> Discrepancy {
     let (n, d) = (points.len(), points.dims);
@@ -65,6 +106,13 @@ pub fn compensated(points: Points, kind: Kind) -> Discrepancy {
         .map(|&w| word_to_f64(w, points.width))
         .collect();
     let exact_products = d <= EXACT_PRODUCT_DIMS;
+    let cols: Vec<Vec<f64>> = if exact_products {
+        Vec::new()
+    } else {
+        (0..d)
+            .map(|k| (0..n).map(|j| xs[j * d + k]).collect())
+            .collect()
+    };
     let chunks = n.div_ceil(ROWS_PER_CHUNK);
     let partials: Vec<(Dd, Dd)> = (0..chunks)
         .into_par_iter()
@@ -81,10 +129,50 @@ pub fn compensated(points: Points, kind: Kind) -> Discrepancy {
                     Dd::from(a.iter().map(|&x| kind.single(x)).product())
                 };
                 s1 = s1.add(single);
-                let mut off = Dd::default();
-                for j in i + 1..n {
-                    off = off.add(product(kind, a, &xs[j * d..(j + 1) * d], exact_products));
-                }
+                let off = if exact_products {
+                    let mut off = Dd::default();
+                    for j in i + 1..n {
+                        off = off.add(product(kind, a, &xs[j * d..(j + 1) * d], true));
+                    }
+                    off
+                } else {
+                    let mut buf = [0.0; BLOCK];
+                    // One monomorphized loop per kind keeps the pair factor branch-free.
+                    match kind {
+                        Kind::L2Star => off_diagonal_blocks(
+                            |x, y| Kind::L2Star.pair(x, y),
+                            a,
+                            &cols,
+                            i,
+                            n,
+                            &mut buf,
+                        ),
+                        Kind::Centered => off_diagonal_blocks(
+                            |x, y| Kind::Centered.pair(x, y),
+                            a,
+                            &cols,
+                            i,
+                            n,
+                            &mut buf,
+                        ),
+                        Kind::WrapAround => off_diagonal_blocks(
+                            |x, y| Kind::WrapAround.pair(x, y),
+                            a,
+                            &cols,
+                            i,
+                            n,
+                            &mut buf,
+                        ),
+                        Kind::GeneralizedL2 => off_diagonal_blocks(
+                            |x, y| Kind::GeneralizedL2.pair(x, y),
+                            a,
+                            &cols,
+                            i,
+                            n,
+                            &mut buf,
+                        ),
+                    }
+                };
                 s2 = s2
                     .add(product(kind, a, a, exact_products))
                     .add(off.add(off));

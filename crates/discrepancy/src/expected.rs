@@ -1,17 +1,20 @@
 //! The expected L2-star D² under nested uniform (Owen) scrambling of a binary digital net.
 //!
-//! Derivation (`DESIGN.md` §5). Write D*² = 3^-d − (2^(1−d)/N)Σ_i Π_k(1 − x_ik²)
-//! + (1/N²)Σ_ij Π_k(1 − max(x_ik, x_jk)). After a nested uniform scramble each point is
-//! uniform on [0,1)^d, so E[1 − x²] = 2/3 and the middle term is −2^(1−d)(2/3)^d = −2·3^-d.
-//! The diagonal pairs give (1/N)E[Π(1 − x)] = 2^-d/N. For i ≠ j, coordinates that agree on
-//! exactly r leading bits (r = lz(h_k) with h = x_i ⊕ x_j) are, after scrambling, uniform on a
-//! common dyadic interval of length 2^-r, split into its two halves; then
-//! E[1 − max] = 1/2 − 2^(−r−2) (and 1/2·… = 1/2 when h_k = 0 would mean equal coordinates,
-//! whose mean 1 − E[x] is 1/2 too). For a digital net the multiset {x_i ⊕ x_j : j} is the net
-//! itself, so Σ_{i≠j} = N·Σ_{h ≠ 0} over the net's points h. Altogether:
+//! Derivation (`DESIGN.md` §5). Write D*² = 3^-d − (2^(1−d)/N)·A + (1/N²)·P with
+//! A = Σ_i Π_k (1 − x_ik²) and P = Σ_ij Π_k (1 − max(x_ik, x_jk)).
 //!
-//! E[D*²] = −3^-d + 2^-d/N + (1/N)Σ_{h ≠ 0} Π_k (1/2 − 2^(−lz(h_k)−2)), with a zero coordinate
-//! contributing 1/2.
+//! After a nested uniform scramble each point is uniform on [0,1)^d, so E[1 − x²] = 2/3 and the
+//! A term contributes −2^(1−d)·(2/3)^d = −2·3^-d. The diagonal of P gives (1/N)·E[Π(1 − x)] =
+//! 2^-d/N. For i ≠ j, write h = x_i ⊕ x_j. A coordinate with h_k ≠ 0 agrees on exactly
+//! r = lz(h_k) leading bits; after scrambling the two values are uniform on the two halves of a
+//! common dyadic interval of length 2^-r, so E[1 − max] = 1/2 − 2^(−r−2). A coordinate with
+//! h_k = 0 has equal values, uniform on [0,1), so E[1 − max] = E[1 − x] = 1/2. For a digital
+//! net the multiset {x_i ⊕ x_j : j} is the net itself, so the off-diagonal part is
+//! N·Σ over the net's points h ≠ 0. Altogether
+//!
+//! E[D*²] = −3^-d + 2^-d/N + (1/N)·Σ_{h ≠ 0} Π_k (1/2 − 2^(−lz(h_k)−2)),
+//!
+//! with a zero coordinate contributing 1/2.
 
 use crate::Points;
 

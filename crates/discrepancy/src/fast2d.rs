@@ -100,11 +100,28 @@ pub fn fast_l2star_2d_rational(points: Points) -> Option<BigRational> {
     }
     let (n, w) = (points.len(), points.width.bits());
     let nn = BigInt::from(n as u64);
+    // Σ_i (2^2W − X_i²)(2^2W − Y_i²): u128 products where they fit (W ≤ 32), carried into a
+    // big integer; big integers otherwise.
     let mut s1 = BigUint::default();
+    let mut acc = 0u128;
     for i in 0..n {
         let p = points.point(i);
-        s1 += Kind::L2Star.single_int(p[0], w).0 * Kind::L2Star.single_int(p[1], w).0;
+        let one2 = 1u128.checked_shl(2 * w).unwrap_or(0);
+        let small = (w <= 32)
+            .then(|| (one2 - (p[0] as u128).pow(2)).checked_mul(one2 - (p[1] as u128).pow(2)))
+            .flatten();
+        match small {
+            Some(v) => match acc.checked_add(v) {
+                Some(a) => acc = a,
+                None => {
+                    s1 += BigUint::from(acc);
+                    acc = v;
+                }
+            },
+            None => s1 += Kind::L2Star.single_int(p[0], w).0 * Kind::L2Star.single_int(p[1], w).0,
+        }
     }
+    s1 += BigUint::from(acc);
     let t1 = c1(Kind::L2Star, 2) * BigRational::new(int(s1), &nn << (4 * w as usize));
     let t2 = BigRational::new(int(pair_sum_2d(points)), (&nn * &nn) << (2 * w as usize));
     Some(c0(Kind::L2Star, 2) + t1 + t2)
