@@ -1,9 +1,11 @@
 //! 2-D L2-star in O(N log N), in exact integers.
 //!
-//! Σ_ij (1 − max(x_i, x_j))(1 − max(y_i, y_j)): sort by x; for point j, every earlier point i
-//! has x_i ≤ x_j, so the x factor is (1 − x_j), and the y factors of the earlier points sum to
-//! cnt(y_i ≤ y_j)·(1 − y_j) + Σ_{y_i > y_j}(1 − y_i), read from a Fenwick tree over the y
-//! ranks holding counts and sums of (2^W − Y). Ties are harmless: max is symmetric.
+//! Σ_ij (1 − max(x_i, x_j))(1 − max(y_i, y_j)): sort by x; for a point j, every earlier point i
+//! has x_i ≤ x_j, so the x factor is (1 − x_j), and the earlier points' y factors sum to
+//! cnt(y_i ≤ y_j)·(1 − y_j) + Σ_{y_i > y_j}(1 − y_i). Those per-point counts and sums come from a
+//! merge sort by y over the x order (divide and conquer): when the two sorted halves merge, each
+//! right-half point sees the left-half points below and above it in one sequential sweep. Ties
+//! are harmless: max is symmetric. Everything is in integers (words scaled by 2^W).
 
 use crate::exact::exact_rational;
 use crate::rational::{c0, c1, int, to_f64};
@@ -11,86 +13,110 @@ use crate::{Discrepancy, Kind, Method, Points};
 use num_bigint::{BigInt, BigUint};
 use num_rational::BigRational;
 
-/// A Fenwick tree of (count, sum) over ranks.
-struct Fenwick {
-    count: Vec<u64>,
-    sum: Vec<u128>,
+/// Exact sum of u128 terms: u128 until it would overflow, then carried into a big integer.
+#[derive(Default)]
+struct WideSum {
+    small: u128,
+    big: BigUint,
 }
 
-impl Fenwick {
-    fn new(n: usize) -> Self {
-        Fenwick {
-            count: vec![0; n + 1],
-            sum: vec![0; n + 1],
+impl WideSum {
+    fn add(&mut self, v: u128) {
+        match self.small.checked_add(v) {
+            Some(s) => self.small = s,
+            None => {
+                self.big += BigUint::from(self.small);
+                self.small = v;
+            }
         }
     }
 
-    fn add(&mut self, rank: usize, v: u128) {
-        let mut i = rank + 1;
-        while i < self.count.len() {
-            self.count[i] += 1;
-            self.sum[i] += v;
-            i += i & i.wrapping_neg();
+    fn add_product(&mut self, a: u128, b: u128) {
+        match a.checked_mul(b) {
+            Some(p) => self.add(p),
+            None => self.big += BigUint::from(a) * BigUint::from(b),
         }
     }
 
-    /// (count, sum) over ranks 0..=rank.
-    fn prefix(&self, rank: usize) -> (u64, u128) {
-        let (mut c, mut s, mut i) = (0u64, 0u128, rank + 1);
-        while i > 0 {
-            c += self.count[i];
-            s += self.sum[i];
-            i &= i - 1;
-        }
-        (c, s)
+    fn total(self) -> BigUint {
+        self.big + BigUint::from(self.small)
     }
+}
+
+/// A point in the sweep: its y word and its x weight 2^W − x.
+#[derive(Clone, Copy)]
+struct Item {
+    y: u64,
+    wx: u128,
 }
 
 /// The exact pair sum Σ_ij Π (2^W − max) for 2-D points.
 fn pair_sum_2d(points: Points) -> BigUint {
     let (n, w) = (points.len(), points.width.bits());
     let one = 1u128 << w;
-    let xs: Vec<u64> = (0..n).map(|i| points.point(i)[0]).collect();
-    let ys: Vec<u64> = (0..n).map(|i| points.point(i)[1]).collect();
-    // y ranks: equal values share a rank, so "≤" counts them.
-    let mut sorted_y = ys.clone();
-    sorted_y.sort_unstable();
-    sorted_y.dedup();
-    let rank = |y: u64| sorted_y.partition_point(|&v| v < y);
-    let mut order: Vec<usize> = (0..n).collect();
-    order.sort_unstable_by_key(|&i| xs[i]);
-    let mut tree = Fenwick::new(sorted_y.len());
-    let mut total_sum = 0u128;
-    // u128 accumulators while they cannot overflow (W ≤ 32 and N ≤ 2^30 keep every term below
-    // 2^105); otherwise, and on any checked overflow, the terms go to big integers.
-    let (mut off_small, mut diag_small) = (0u128, 0u128);
-    let (mut off_big, mut diag_big) = (BigUint::default(), BigUint::default());
-    for &j in &order {
-        let (xj, yj) = (one - xs[j] as u128, one - ys[j] as u128);
-        let r = rank(ys[j]);
-        let (le_count, le_sum) = tree.prefix(r);
-        let greater = total_sum - le_sum;
-        // Σ over earlier i of (2^W − max(y_i, y_j)), times (2^W − x_j).
-        let small = (le_count as u128)
-            .checked_mul(yj)
-            .and_then(|v| v.checked_add(greater))
-            .and_then(|inner| inner.checked_mul(xj))
-            .and_then(|term| off_small.checked_add(term))
-            .zip(xj.checked_mul(yj).and_then(|dg| diag_small.checked_add(dg)));
-        match small {
-            Some((o, d)) => (off_small, diag_small) = (o, d),
-            None => {
-                let inner = BigUint::from(le_count) * BigUint::from(yj) + BigUint::from(greater);
-                off_big += inner * BigUint::from(xj);
-                diag_big += BigUint::from(xj) * BigUint::from(yj);
+    let mut items: Vec<Item> = (0..n)
+        .map(|i| {
+            let p = points.point(i);
+            Item {
+                y: p[1],
+                wx: one - p[0] as u128,
             }
-        }
-        tree.add(r, yj);
-        total_sum += yj;
+        })
+        .collect();
+    // Order by x (the weight 2^W − x decreases with x).
+    items.sort_unstable_by_key(|it| std::cmp::Reverse(it.wx));
+    let mut diag = WideSum::default();
+    for it in &items {
+        diag.add_product(it.wx, one - it.y as u128);
     }
-    let off = off_big + BigUint::from(off_small);
-    let diag = diag_big + BigUint::from(diag_small);
-    diag + (off << 1usize)
+    let mut off = WideSum::default();
+    let mut buf = items.clone();
+    // Bottom-up merge sort by y; at each merge, left-half points precede right-half points in x.
+    let mut width = 1;
+    while width < n {
+        let mut lo = 0;
+        while lo < n {
+            let mid = (lo + width).min(n);
+            let hi = (lo + 2 * width).min(n);
+            if mid < hi {
+                merge_count(
+                    &items[lo..mid],
+                    &items[mid..hi],
+                    &mut buf[lo..hi],
+                    one,
+                    &mut off,
+                );
+            } else {
+                buf[lo..hi].copy_from_slice(&items[lo..hi]);
+            }
+            lo = hi;
+        }
+        std::mem::swap(&mut items, &mut buf);
+        width *= 2;
+    }
+    diag.total() + (off.total() << 1usize)
+}
+
+/// Merges two y-sorted runs into `out`, adding Σ_{j in right} wx_j·(cnt_le·(2^W − y_j) + Σ_{i in
+/// left, y_i > y_j}(2^W − y_i)) to `off`.
+fn merge_count(left: &[Item], right: &[Item], out: &mut [Item], one: u128, off: &mut WideSum) {
+    let left_total: u128 = left.iter().map(|i| one - i.y as u128).sum();
+    let (mut a, mut k) = (0usize, 0usize);
+    let mut le_sum = 0u128; // Σ over the left items already passed (y ≤ current y_j)
+    for r in right {
+        while a < left.len() && left[a].y <= r.y {
+            le_sum += one - left[a].y as u128;
+            out[k] = left[a];
+            a += 1;
+            k += 1;
+        }
+        let greater = left_total - le_sum;
+        let inner = (a as u128) * (one - r.y as u128) + greater;
+        off.add_product(r.wx, inner);
+        out[k] = *r;
+        k += 1;
+    }
+    out[k..].copy_from_slice(&left[a..]);
 }
 
 /// Exact 2-D L2-star D² in O(N log N); `None` unless the points are 2-D.
