@@ -1,6 +1,6 @@
 //! Golden vectors (hex) of every ART variant and peer: seed 2024, 256 symbols, dimension 1 for
 //! 32-bit words and dimension 5 for 64-bit words (0 where the peer has no 64-bit form).
-//! Printed by examples/print_golden.rs; they freeze gartowen's reconstruction.
+//! Printed by crates/art/examples/print_art_golden.rs; they freeze gartowen's reconstruction.
 
 use gartowen::core::Width;
 

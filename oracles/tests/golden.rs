@@ -1,5 +1,5 @@
 //! Golden vectors of the oracle (hex words), freezing the documented keying: seed 2024,
-//! dimension 1 (32-bit) and dimension 5 (64-bit). Printed by examples/print_golden.rs.
+//! dimension 1 (32-bit) and dimension 5 (64-bit). Printed by examples/print_oracle_golden.rs.
 
 use gartowen_core::{PowerOfTwoBase, Scrambler, Width};
 use gartowen_oracles::{FullTreeOwen, OwenVariant};

@@ -25,6 +25,19 @@ pub enum ArtVariant {
 }
 
 impl ArtVariant {
+    /// Every variant: the four named ones, then Matrix(1..=8) and Translation(1..=8).
+    pub fn all() -> Vec<ArtVariant> {
+        let mut v = vec![
+            ArtVariant::ArtOwen2,
+            ArtVariant::QArt4,
+            ArtVariant::ArtOwen8P,
+            ArtVariant::ArtOwen16P,
+        ];
+        v.extend((1..=8).map(ArtVariant::Matrix));
+        v.extend((1..=8).map(ArtVariant::Translation));
+        v
+    }
+
     /// Digit size q.
     pub fn q(self) -> u32 {
         match self {

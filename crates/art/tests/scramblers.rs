@@ -9,15 +9,7 @@ use gartowen_oracles::inspector::{inspect_exhaustive, inspect_probes};
 use gartowen_oracles::scramble_with_nodes;
 
 fn all_variants() -> Vec<ArtVariant> {
-    let mut v = vec![
-        ArtVariant::ArtOwen2,
-        ArtVariant::QArt4,
-        ArtVariant::ArtOwen8P,
-        ArtVariant::ArtOwen16P,
-    ];
-    v.extend((1..=8).map(ArtVariant::Matrix));
-    v.extend((1..=8).map(ArtVariant::Translation));
-    v
+    ArtVariant::all()
 }
 
 fn base(v: ArtVariant) -> PowerOfTwoBase {

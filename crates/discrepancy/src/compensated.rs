@@ -7,7 +7,6 @@
 
 use crate::dd::Dd;
 use crate::{Discrepancy, Kind, Method, Points};
-use gartowen_core::word_to_f64;
 use rayon::prelude::*;
 
 /// Rows per parallel task: fixed, so the combination order never depends on threads.
@@ -100,11 +99,7 @@ fn off_diagonal_blocks(
 /// D² by compensated sums.
 pub fn compensated(points: Points, kind: Kind) -> Discrepancy {
     let (n, d) = (points.len(), points.dims);
-    let xs: Vec<f64> = points
-        .words
-        .iter()
-        .map(|&w| word_to_f64(w, points.width))
-        .collect();
+    let xs = points.to_f64();
     let exact_products = d <= EXACT_PRODUCT_DIMS;
     let cols: Vec<Vec<f64>> = if exact_products {
         Vec::new()

@@ -52,6 +52,14 @@ impl<'a> Points<'a> {
         self.words.is_empty()
     }
 
+    /// Every coordinate as f64 (exact for W ≤ 53, truncated to 53 bits above), row-major.
+    pub fn to_f64(&self) -> Vec<f64> {
+        self.words
+            .iter()
+            .map(|&w| gartowen_core::word_to_f64(w, self.width))
+            .collect()
+    }
+
     /// Point i.
     #[inline(always)]
     pub fn point(&self, i: usize) -> &'a [u64] {

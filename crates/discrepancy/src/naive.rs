@@ -1,16 +1,11 @@
 //! Plain f64: the full double sum with ordinary accumulation (what common tools do).
 
 use crate::{Discrepancy, Kind, Method, Points};
-use gartowen_core::word_to_f64;
 
 /// D² in plain f64 over all N² pairs.
 pub fn naive(points: Points, kind: Kind) -> Discrepancy {
     let (n, d) = (points.len(), points.dims);
-    let xs: Vec<f64> = points
-        .words
-        .iter()
-        .map(|&w| word_to_f64(w, points.width))
-        .collect();
+    let xs = points.to_f64();
     let mut s1 = 0.0;
     let mut s2 = 0.0;
     for i in 0..n {

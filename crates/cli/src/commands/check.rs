@@ -158,6 +158,20 @@ pub fn run(a: CheckArgs) -> Result<ExitCode, CliError> {
 
 type Outcome = (bool, Value, String);
 
+/// The sets to check: the whole set, or each requested projection with its dimensions.
+fn targets(
+    points: &PointSet,
+    projections: Option<&[Vec<usize>]>,
+) -> Result<Vec<(Vec<usize>, PointSet)>, CliError> {
+    match projections {
+        None => Ok(vec![((0..points.dims()).collect(), points.clone())]),
+        Some(list) => list
+            .iter()
+            .map(|p| Ok((p.clone(), points.project(p).map_err(usage)?)))
+            .collect(),
+    }
+}
+
 fn run_net(
     a: &CheckArgs,
     base: CheckBase,
@@ -169,13 +183,7 @@ fn run_net(
         None => implied_m(points, base).map_err(usage)?,
     };
     let b = base.get();
-    let targets: Vec<(Vec<usize>, PointSet)> = match projections {
-        None => vec![((0..points.dims()).collect(), points.clone())],
-        Some(list) => list
-            .iter()
-            .map(|p| Ok((p.clone(), points.project(p).map_err(usage)?)))
-            .collect::<Result<_, CliError>>()?,
-    };
+    let targets = targets(points, projections)?;
     let mut holds = true;
     let mut results = Vec::new();
     let mut text = String::new();
@@ -249,13 +257,7 @@ fn run_sequence(
             .unwrap_or(0),
     };
     let b = base.get();
-    let targets: Vec<(Vec<usize>, PointSet)> = match projections {
-        None => vec![((0..points.dims()).collect(), points.clone())],
-        Some(list) => list
-            .iter()
-            .map(|p| Ok((p.clone(), points.project(p).map_err(usage)?)))
-            .collect::<Result<_, CliError>>()?,
-    };
+    let targets = targets(points, projections)?;
     let mut holds = true;
     let mut results = Vec::new();
     let mut text = String::new();

@@ -162,57 +162,36 @@ fn for_each_point(
     Ok(())
 }
 
-fn write_npy(p: &Plan, a: &GenerateArgs, out: &mut dyn Write) -> Result<(), CliError> {
+/// Writes the points as an (N, d) .npy array of `T`, converting each word with `conv`.
+fn write_npy_as<T: npyz::AutoSerialize>(
+    p: &Plan,
+    order: PointOrder,
+    out: &mut dyn Write,
+    conv: impl Fn(u64) -> T,
+) -> Result<(), CliError> {
     use npyz::WriterBuilder;
-    let shape = [p.count, p.seq.dims() as u64];
-    let width = p.seq.width();
     let npy = |e: std::io::Error| CliError::Io(format!("npy write failed: {e}"));
+    let mut w = npyz::WriteOptions::<T>::new()
+        .default_dtype()
+        .shape(&[p.count, p.seq.dims() as u64])
+        .writer(out)
+        .begin_nd()
+        .map_err(npy)?;
+    for_each_point(p, order, |row| {
+        for &x in row {
+            w.push(&conv(x)).map_err(npy)?;
+        }
+        Ok(())
+    })?;
+    w.finish().map_err(npy)
+}
+
+fn write_npy(p: &Plan, a: &GenerateArgs, out: &mut dyn Write) -> Result<(), CliError> {
+    let width = p.seq.width();
     match (a.words, width.bits()) {
-        (false, _) => {
-            let mut w = npyz::WriteOptions::new()
-                .default_dtype()
-                .shape(&shape)
-                .writer(out)
-                .begin_nd()
-                .map_err(npy)?;
-            for_each_point(p, a.order, |row| {
-                for &x in row {
-                    w.push(&word_to_f64(x, width)).map_err(npy)?;
-                }
-                Ok(())
-            })?;
-            w.finish().map_err(npy)
-        }
-        (true, 32) => {
-            let mut w = npyz::WriteOptions::<u32>::new()
-                .default_dtype()
-                .shape(&shape)
-                .writer(out)
-                .begin_nd()
-                .map_err(npy)?;
-            for_each_point(p, a.order, |row| {
-                for &x in row {
-                    w.push(&(x as u32)).map_err(npy)?;
-                }
-                Ok(())
-            })?;
-            w.finish().map_err(npy)
-        }
-        (true, _) => {
-            let mut w = npyz::WriteOptions::<u64>::new()
-                .default_dtype()
-                .shape(&shape)
-                .writer(out)
-                .begin_nd()
-                .map_err(npy)?;
-            for_each_point(p, a.order, |row| {
-                for &x in row {
-                    w.push(&x).map_err(npy)?;
-                }
-                Ok(())
-            })?;
-            w.finish().map_err(npy)
-        }
+        (false, _) => write_npy_as(p, a.order, out, |x| word_to_f64(x, width)),
+        (true, 32) => write_npy_as(p, a.order, out, |x| x as u32),
+        (true, _) => write_npy_as(p, a.order, out, |x| x),
     }
 }
 
