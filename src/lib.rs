@@ -11,6 +11,8 @@ pub use gartowen_seq as seq;
 
 use gartowen_core::Registry;
 
+pub mod verify;
+
 /// Every scrambler gartowen knows, in one list; cross-checks iterate over it.
 pub fn registry() -> Registry {
     let mut r = Registry::with_core();

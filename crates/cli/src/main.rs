@@ -26,6 +26,7 @@ enum Command {
     Check(commands::check::CheckArgs),
     Inspect(commands::inspect::InspectArgs),
     Discrepancy(commands::discrepancy::DiscrepancyArgs),
+    Verify(commands::verify::VerifyArgs),
     Matrices(commands::matrices::MatricesArgs),
     List(commands::list::ListArgs),
 }
@@ -37,6 +38,7 @@ fn main() -> ExitCode {
         Command::Check(a) => commands::check::run(a),
         Command::Inspect(a) => commands::inspect::run(a),
         Command::Discrepancy(a) => commands::discrepancy::run(a),
+        Command::Verify(a) => commands::verify::run(a),
         Command::Matrices(a) => commands::matrices::run(a),
         Command::List(a) => commands::list::run(a),
     };

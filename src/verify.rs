@@ -1,0 +1,354 @@
+//! The conformance battery behind `gartowen verify`: every check runs on any registered
+//! scrambler as a black box, so external and deliberately broken implementations are judged
+//! the same way.
+//!
+//! Checks per implementation:
+//! * `inverse`: `unscramble(scramble(x)) = x` on 10^4 (quick) or 10^5 (full) seeded words;
+//! * `nested`: the inspector, exhaustive at 16 bits (probes at 32 bits where 16 is unsupported);
+//! * `nets`: Sobol (base 2), sz4 (base 4) or sz16 (base 16) scrambled in its own base keeps the
+//!   t-value the rank path gives for the unscrambled matrices, for every m up to a level bound;
+//! * `node-law`: over independent seeds, the permutation of one node (dimension 0, depth 2,
+//!   prefix one) against uniform S_b: χ² against the α = 1e-3 critical value, Bonferroni over
+//!   the implementations that claim nested uniformity; total variation; and the affine fraction,
+//!   the share of nodes with π(3) = π(0)⊕π(1)⊕π(2), which is 1 for affine families and 1/(b−3)
+//!   for uniform S_b. A verdict is given only to implementations that claim nested uniformity.
+
+use crate::core::{
+    BuildContext, CoreError, DigitLayout, Permutation, PowerOfTwoBase, Registry, Scrambler,
+    SplitMix64, Width,
+};
+use crate::netcheck::{counting::t_value, rank, CheckBase, PointSet};
+use crate::oracles::inspector::{inspect_exhaustive, inspect_probes, NodeLaw};
+use crate::seq::SequenceKind;
+use serde::Serialize;
+use statrs::distribution::{ChiSquared, ContinuousCDF};
+use std::time::Instant;
+
+/// How much to run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Level {
+    /// Under a minute for the whole registry on 2 cores.
+    Quick,
+    /// Larger samples and deeper nets.
+    Full,
+}
+
+/// A check's outcome.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Verdict {
+    /// The property holds.
+    Pass,
+    /// The property is violated.
+    Fail,
+    /// A measured value without a verdict (no claim to judge).
+    Measured,
+    /// Not applicable (e.g. no sequence in this base).
+    Skipped,
+}
+
+/// One check of one implementation.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CheckResult {
+    /// Check name.
+    pub check: String,
+    /// Outcome.
+    pub verdict: Verdict,
+    /// What was found, in words (the failing node or box, the measured distance).
+    pub detail: String,
+    /// The measured value where there is one (χ² for node-law).
+    pub value: Option<f64>,
+    /// Wall time.
+    pub seconds: f64,
+}
+
+/// All checks of one implementation.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ImplReport {
+    /// Registry name.
+    pub name: String,
+    /// Scrambling base.
+    pub base: u32,
+    /// Whether it claims nested uniformity.
+    pub claims_nested_uniform: bool,
+    /// The checks.
+    pub checks: Vec<CheckResult>,
+}
+
+impl ImplReport {
+    /// Whether any check failed.
+    pub fn failed(&self) -> bool {
+        self.checks.iter().any(|c| c.verdict == Verdict::Fail)
+    }
+}
+
+fn timed(check: &str, f: impl FnOnce() -> (Verdict, String, Option<f64>)) -> CheckResult {
+    let t = Instant::now();
+    let (verdict, detail, value) = f();
+    CheckResult {
+        check: check.into(),
+        verdict,
+        detail,
+        value,
+        seconds: t.elapsed().as_secs_f64(),
+    }
+}
+
+fn check_inverse(s: &dyn Scrambler, level: Level) -> (Verdict, String, Option<f64>) {
+    let n = if level == Level::Quick {
+        10_000
+    } else {
+        100_000
+    };
+    let mut rng = SplitMix64::new(0x1234);
+    for width in [Width::W32, Width::W64]
+        .into_iter()
+        .filter(|w| s.supports_width(*w))
+    {
+        for _ in 0..n {
+            let x = rng.next_u64() & width.mask();
+            let dim = rng.bounded(8);
+            let y = s.scramble(x, width, dim);
+            if width.check(y).is_err() || s.unscramble(y, width, dim) != x {
+                return (
+                    Verdict::Fail,
+                    format!(
+                        "{}-bit word {x:#x} (dim {dim}) -> {y:#x} does not invert",
+                        width.bits()
+                    ),
+                    None,
+                );
+            }
+        }
+    }
+    (
+        Verdict::Pass,
+        format!("{n} words per supported width invert"),
+        None,
+    )
+}
+
+fn check_nested(s: &dyn Scrambler) -> (Verdict, String, Option<f64>) {
+    let base = s.base();
+    let w16 = Width::new(16).expect("16");
+    let report = if s.supports_width(w16) {
+        inspect_exhaustive(&|x| s.scramble(x, w16, 0), w16, base, 16)
+    } else {
+        inspect_probes(
+            &|x| s.scramble(x, Width::W32, 0),
+            Width::W32,
+            base,
+            32,
+            2000,
+            1,
+        )
+    };
+    match report.first_violation {
+        None => (
+            Verdict::Pass,
+            format!(
+                "nested in base {} ({} nodes)",
+                base.base(),
+                report.nodes_checked
+            ),
+            None,
+        ),
+        Some(v) => (
+            Verdict::Fail,
+            format!(
+                "{:?} at depth {}, prefix {:#x}: inputs {:#x}, {:#x} -> outputs {:#x}, {:#x}",
+                v.kind, v.depth, v.prefix, v.inputs[0], v.inputs[1], v.outputs[0], v.outputs[1]
+            ),
+            None,
+        ),
+    }
+}
+
+fn check_nets(s: &dyn Scrambler, level: Level) -> (Verdict, String, Option<f64>) {
+    let (kind, dims, max_m): (SequenceKind, Vec<usize>, u32) = match (s.base().base(), level) {
+        (2, Level::Quick) => (SequenceKind::Sobol, vec![0, 1, 2], 10),
+        (2, Level::Full) => (SequenceKind::Sobol, vec![0, 1, 2], 14),
+        (4, Level::Quick) => (SequenceKind::Sz4, vec![0, 1, 2, 3], 5),
+        (4, Level::Full) => (SequenceKind::Sz4, vec![0, 1, 2, 3], 7),
+        (16, Level::Quick) => (SequenceKind::Sz16, vec![0, 5, 10, 15], 3),
+        (16, Level::Full) => (SequenceKind::Sz16, vec![0, 5, 10, 15], 4),
+        (b, _) => {
+            return (
+                Verdict::Skipped,
+                format!("no built-in sequence in base {b}"),
+                None,
+            )
+        }
+    };
+    if !s.supports_width(Width::W32) {
+        return (Verdict::Skipped, "32-bit words unsupported".into(), None);
+    }
+    let seq = kind
+        .build(dims.iter().max().unwrap() + 1, Width::W32)
+        .expect("built-in");
+    let q = kind.base().q();
+    for m in 1..=max_m {
+        let expected = rank::t_value(&seq, &dims, q, m).expect("rank path");
+        let n = 1u64 << (q * m);
+        let cols = dims
+            .iter()
+            .map(|&j| {
+                (0..n)
+                    .map(|i| s.scramble(seq.point(i, j), Width::W32, j as u32))
+                    .collect()
+            })
+            .collect();
+        let p = PointSet::from_columns(Width::W32, cols).expect("points");
+        let got = t_value(
+            &p,
+            CheckBase::new(kind.base().base() as u64).expect("base"),
+            m,
+        )
+        .expect("t-value");
+        if got != expected {
+            return (
+                Verdict::Fail,
+                format!(
+                    "{} dims {dims:?}, m = {m}: t = {got} after scrambling, {expected} before",
+                    kind.name()
+                ),
+                None,
+            );
+        }
+    }
+    (
+        Verdict::Pass,
+        format!(
+            "{} dims {dims:?} keep their t-values for m ≤ {max_m}",
+            kind.name()
+        ),
+        None,
+    )
+}
+
+/// The node-law statistics of `request` over `seeds` seeds: (χ², dof, total variation, affine fraction).
+fn node_law(
+    registry: &Registry,
+    request: &str,
+    base: PowerOfTwoBase,
+    seeds: u64,
+) -> Result<(f64, usize, f64, Option<f64>), CoreError> {
+    let b = base.base();
+    let cells = match b {
+        2..=4 => (1..=b as usize).product::<usize>(),
+        8 | 16 => (b * (b - 1)) as usize,
+        _ => b as usize,
+    };
+    let layout = DigitLayout::new(Width::W32, base);
+    let prefix = layout.set(0, 1, 1);
+    let mut counts = vec![0u64; cells];
+    let mut affine = 0u64;
+    for seed in 0..seeds {
+        let s = registry.build_with(
+            request,
+            &BuildContext {
+                seed,
+                default_base: base,
+            },
+        )?;
+        let images: Vec<u8> = (0..b)
+            .map(|d| layout.get(s.scramble(layout.set(prefix, 2, d), Width::W32, 0), 2) as u8)
+            .collect();
+        let Ok(p) = Permutation::from_images(&images) else {
+            continue;
+        };
+        counts[if b <= 16 {
+            NodeLaw::cell(&p)
+        } else {
+            p.apply(0) as usize
+        }] += 1;
+        if b >= 8 {
+            affine += (p.apply(3) == p.apply(0) ^ p.apply(1) ^ p.apply(2)) as u64;
+        }
+    }
+    let total: u64 = counts.iter().sum();
+    let e = total as f64 / cells as f64;
+    let chi2 = counts.iter().map(|&c| (c as f64 - e).powi(2) / e).sum();
+    let tv = 0.5
+        * counts
+            .iter()
+            .map(|&c| (c as f64 / total as f64 - 1.0 / cells as f64).abs())
+            .sum::<f64>();
+    Ok((
+        chi2,
+        cells - 1,
+        tv,
+        (b >= 8).then(|| affine as f64 / total as f64),
+    ))
+}
+
+/// Runs the battery on the named implementations (all of the registry's when `names` is empty).
+pub fn verify(
+    registry: &Registry,
+    names: &[String],
+    level: Level,
+) -> Result<Vec<ImplReport>, CoreError> {
+    let names: Vec<String> = if names.is_empty() {
+        registry
+            .specs()
+            .iter()
+            .map(|s| s.name.to_string())
+            .collect()
+    } else {
+        names.to_vec()
+    };
+    let claimants = names
+        .iter()
+        .filter_map(|n| registry.build(n, 0).ok())
+        .filter(|s| s.claims_nested_uniform())
+        .count()
+        .max(1);
+    let seeds = if level == Level::Quick { 2000 } else { 20_000 };
+    let mut out = Vec::new();
+    for name in &names {
+        let probe = registry.build(name, 0)?;
+        let base = probe.base();
+        let claims = probe.claims_nested_uniform();
+        let mut checks = vec![
+            timed("inverse", || check_inverse(probe.as_ref(), level)),
+            timed("nested", || check_nested(probe.as_ref())),
+            timed("nets", || check_nets(probe.as_ref(), level)),
+        ];
+        checks.push(timed("node-law", || {
+            let (chi2, dof, tv, affine) = match node_law(registry, name, base, seeds) {
+                Ok(law) => law,
+                Err(e) => {
+                    return (
+                        Verdict::Fail,
+                        format!("could not build per-seed instances: {e}"),
+                        None,
+                    )
+                }
+            };
+            let critical = ChiSquared::new(dof as f64)
+                .expect("dof ≥ 1")
+                .inverse_cdf(1.0 - 1e-3 / claimants as f64);
+            let looks_affine = affine.is_some_and(|a| a > 0.5);
+            let detail = format!(
+                "chi-square {chi2:.1} (critical {critical:.1}, {dof} dof), TV {tv:.3}{}",
+                affine.map_or(String::new(), |a| format!(", affine fraction {a:.3}"))
+            );
+            let verdict = if !claims {
+                Verdict::Measured
+            } else if chi2 < critical && !looks_affine {
+                Verdict::Pass
+            } else {
+                Verdict::Fail
+            };
+            (verdict, detail, Some(chi2))
+        }));
+        out.push(ImplReport {
+            name: probe.name(),
+            base: base.base(),
+            claims_nested_uniform: claims,
+            checks,
+        });
+    }
+    Ok(out)
+}
