@@ -25,17 +25,19 @@ use statrs::distribution::{ChiSquared, ContinuousCDF};
 use std::time::Instant;
 
 /// How much to run.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Level {
     /// Under a minute for the whole registry on 2 cores.
     Quick,
     /// Larger samples and deeper nets.
     Full,
+    /// Long: the largest samples and nets; meant to be sharded.
+    Exhaustive,
 }
 
 /// A check's outcome.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Verdict {
     /// The property holds.
@@ -49,7 +51,7 @@ pub enum Verdict {
 }
 
 /// One check of one implementation.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, serde::Deserialize)]
 pub struct CheckResult {
     /// Check name.
     pub check: String,
@@ -64,8 +66,10 @@ pub struct CheckResult {
 }
 
 /// All checks of one implementation.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, serde::Deserialize)]
 pub struct ImplReport {
+    /// Position in the list of implementations verified (restores order when shards merge).
+    pub index: usize,
     /// Registry name.
     pub name: String,
     /// Scrambling base.
@@ -169,10 +173,12 @@ fn check_nets(s: &dyn Scrambler, level: Level) -> (Verdict, String, Option<f64>)
     let (kind, dims, max_m): (SequenceKind, Vec<usize>, u32) = match (s.base().base(), level) {
         (2, Level::Quick) => (SequenceKind::Sobol, vec![0, 1, 2], 10),
         (2, Level::Full) => (SequenceKind::Sobol, vec![0, 1, 2], 14),
+        (2, Level::Exhaustive) => (SequenceKind::Sobol, vec![0, 1, 2], 16),
         (4, Level::Quick) => (SequenceKind::Sz4, vec![0, 1, 2, 3], 5),
         (4, Level::Full) => (SequenceKind::Sz4, vec![0, 1, 2, 3], 7),
+        (4, Level::Exhaustive) => (SequenceKind::Sz4, vec![0, 1, 2, 3], 8),
         (16, Level::Quick) => (SequenceKind::Sz16, vec![0, 5, 10, 15], 3),
-        (16, Level::Full) => (SequenceKind::Sz16, vec![0, 5, 10, 15], 4),
+        (16, Level::Full | Level::Exhaustive) => (SequenceKind::Sz16, vec![0, 5, 10, 15], 4),
         (b, _) => {
             return (
                 Verdict::Skipped,
@@ -283,11 +289,68 @@ fn node_law(
     ))
 }
 
+/// Which part of the list to run: shard `index` (1-based) of `count`; implementation k goes to
+/// shard (k mod count) + 1, so shards are deterministic and disjoint.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Shard {
+    /// 1-based shard number.
+    pub index: usize,
+    /// Number of shards.
+    pub count: usize,
+}
+
+impl Shard {
+    /// The whole list.
+    pub const ALL: Shard = Shard { index: 1, count: 1 };
+
+    /// Parses `I/N` with 1 ≤ I ≤ N.
+    pub fn parse(text: &str) -> Option<Shard> {
+        let (i, n) = text.split_once('/')?;
+        let (index, count) = (i.trim().parse().ok()?, n.trim().parse().ok()?);
+        (count >= 1 && (1..=count).contains(&index)).then_some(Shard { index, count })
+    }
+
+    /// Whether implementation k belongs to this shard.
+    pub fn contains(&self, k: usize) -> bool {
+        k % self.count + 1 == self.index
+    }
+}
+
+/// Merges shard reports into one list in implementation order; errors on a duplicate or a gap.
+pub fn merge(parts: Vec<Vec<ImplReport>>) -> Result<Vec<ImplReport>, String> {
+    let mut all: Vec<ImplReport> = parts.into_iter().flatten().collect();
+    all.sort_by_key(|r| r.index);
+    if let Some(w) = all.windows(2).find(|w| w[0].index == w[1].index) {
+        return Err(format!(
+            "implementation {} ({}) appears in two shards",
+            w[0].index, w[0].name
+        ));
+    }
+    if let Some((k, r)) = all.iter().enumerate().find(|(k, r)| r.index != *k) {
+        return Err(format!(
+            "implementation {k} is missing (next present: {} at {})",
+            r.name, r.index
+        ));
+    }
+    Ok(all)
+}
+
 /// Runs the battery on the named implementations (all of the registry's when `names` is empty).
 pub fn verify(
     registry: &Registry,
     names: &[String],
     level: Level,
+) -> Result<Vec<ImplReport>, CoreError> {
+    verify_shard(registry, names, level, Shard::ALL, &|_| {})
+}
+
+/// [`verify`] restricted to one shard, calling `progress` after each implementation.
+pub fn verify_shard(
+    registry: &Registry,
+    names: &[String],
+    level: Level,
+    shard: Shard,
+    progress: &dyn Fn(&str),
 ) -> Result<Vec<ImplReport>, CoreError> {
     let names: Vec<String> = if names.is_empty() {
         registry
@@ -304,9 +367,13 @@ pub fn verify(
         .filter(|s| s.claims_nested_uniform())
         .count()
         .max(1);
-    let seeds = if level == Level::Quick { 2000 } else { 20_000 };
+    let seeds = match level {
+        Level::Quick => 2000,
+        Level::Full => 20_000,
+        Level::Exhaustive => 50_000,
+    };
     let mut out = Vec::new();
-    for name in &names {
+    for (index, name) in names.iter().enumerate().filter(|(k, _)| shard.contains(*k)) {
         let probe = registry.build(name, 0)?;
         let base = probe.base();
         let claims = probe.claims_nested_uniform();
@@ -343,7 +410,9 @@ pub fn verify(
             };
             (verdict, detail, Some(chi2))
         }));
+        progress(name);
         out.push(ImplReport {
+            index,
             name: probe.name(),
             base: base.base(),
             claims_nested_uniform: claims,
