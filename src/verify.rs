@@ -196,16 +196,10 @@ fn check_nets(s: &dyn Scrambler, level: Level) -> (Verdict, String, Option<f64>)
     let q = kind.base().q();
     for m in 1..=max_m {
         let expected = rank::t_value(&seq, &dims, q, m).expect("rank path");
-        let n = 1u64 << (q * m);
-        let cols = dims
-            .iter()
-            .map(|&j| {
-                (0..n)
-                    .map(|i| s.scramble(seq.point(i, j), Width::W32, j as u32))
-                    .collect()
-            })
-            .collect();
-        let p = PointSet::from_columns(Width::W32, cols).expect("points");
+        let p = PointSet::from_sequence(&seq, &dims, 1u64 << (q * m), |x, j| {
+            s.scramble(x, Width::W32, j as u32)
+        })
+        .expect("points");
         let got = t_value(
             &p,
             CheckBase::new(kind.base().base() as u64).expect("base"),

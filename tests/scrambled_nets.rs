@@ -9,15 +9,7 @@ use gartowen::netcheck::{rank, CheckBase, PointSet};
 use gartowen::seq::{DigitalSequence, SequenceKind};
 
 fn scrambled(seq: &DigitalSequence, s: &dyn Scrambler, dims: &[usize], n: u64) -> PointSet {
-    let cols = dims
-        .iter()
-        .map(|&j| {
-            (0..n)
-                .map(|i| s.scramble(seq.point(i, j), seq.width(), j as u32))
-                .collect()
-        })
-        .collect();
-    PointSet::from_columns(seq.width(), cols).unwrap()
+    PointSet::from_sequence(seq, dims, n, |x, j| s.scramble(x, seq.width(), j as u32)).unwrap()
 }
 
 #[test]

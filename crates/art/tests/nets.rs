@@ -15,27 +15,14 @@ fn scrambled_from_root(
     n: u64,
     root: u32,
 ) -> PointSet {
-    let cols = dims
-        .iter()
-        .map(|&j| {
-            (0..n)
-                .map(|i| s.scramble_from_root(seq.point(i, j), seq.width(), root, false))
-                .collect()
-        })
-        .collect();
-    PointSet::from_columns(seq.width(), cols).unwrap()
+    PointSet::from_sequence(seq, dims, n, |x, _| {
+        s.scramble_from_root(x, seq.width(), root, false)
+    })
+    .unwrap()
 }
 
 fn scrambled(seq: &DigitalSequence, s: &dyn Scrambler, dims: &[usize], n: u64) -> PointSet {
-    let cols = dims
-        .iter()
-        .map(|&j| {
-            (0..n)
-                .map(|i| s.scramble(seq.point(i, j), seq.width(), j as u32))
-                .collect()
-        })
-        .collect();
-    PointSet::from_columns(seq.width(), cols).unwrap()
+    PointSet::from_sequence(seq, dims, n, |x, j| s.scramble(x, seq.width(), j as u32)).unwrap()
 }
 
 #[test]

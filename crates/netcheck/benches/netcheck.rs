@@ -7,10 +7,8 @@ use gartowen_netcheck::{rank, CheckBase, PointSet, ProjectionSpec};
 use gartowen_seq::{sobol, sz, DigitalSequence};
 
 fn points(seq: &DigitalSequence, n: u64) -> PointSet {
-    let cols = (0..seq.dims())
-        .map(|j| (0..n).map(|i| seq.point(i, j)).collect())
-        .collect();
-    PointSet::from_columns(seq.width(), cols).unwrap()
+    let dims: Vec<usize> = (0..seq.dims()).collect();
+    PointSet::from_sequence(seq, &dims, n, |x, _| x).unwrap()
 }
 
 fn benches(c: &mut Criterion) {

@@ -8,10 +8,8 @@ use std::time::Instant;
 fn main() {
     let seq = gartowen_seq::sz::sz16(16, Width::W32).unwrap();
     let n = 1u64 << 20;
-    let cols = (0..16)
-        .map(|j| (0..n).map(|i| seq.point(i, j)).collect())
-        .collect();
-    let p = PointSet::from_columns(Width::W32, cols).unwrap();
+    let dims: Vec<usize> = (0..16).collect();
+    let p = PointSet::from_sequence(&seq, &dims, n, |x, _| x).unwrap();
     let start = Instant::now();
     let r = check_net(&p, CheckBase::new(16).unwrap(), 5, 0).unwrap();
     println!(

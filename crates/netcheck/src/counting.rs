@@ -551,6 +551,7 @@ pub fn check_sequence_with_progress(
     let n = points.len();
     let mut blocks_checked = 0u64;
     let mut shapes_checked = 0u64;
+    let mut first_failure = None;
     for m in t..=max_m {
         let size = match base.pow(m) {
             Some(p) if p <= n as u64 => p as usize,
@@ -601,20 +602,12 @@ pub fn check_sequence_with_progress(
                     + shape_list.iter().position(|s| *s == f.shape).unwrap();
                 blocks_checked += block as u64 + 1;
                 shapes_checked += pos as u64 + 1;
-                return Ok(SequenceReport {
-                    base: base.get(),
-                    t,
-                    max_m,
-                    dims: points.dims(),
-                    holds: false,
-                    blocks_checked,
-                    shapes_checked,
-                    first_failure: Some(SequenceFailure {
-                        m,
-                        block: block as u64,
-                        failure: f,
-                    }),
+                first_failure = Some(SequenceFailure {
+                    m,
+                    block: block as u64,
+                    failure: f,
                 });
+                break;
             }
         }
     }
@@ -623,9 +616,9 @@ pub fn check_sequence_with_progress(
         t,
         max_m,
         dims: points.dims(),
-        holds: true,
+        holds: first_failure.is_none(),
         blocks_checked,
         shapes_checked,
-        first_failure: None,
+        first_failure,
     })
 }

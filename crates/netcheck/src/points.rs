@@ -100,6 +100,21 @@ impl PointSet {
         Ok(PointSet { width, coords })
     }
 
+    /// Points 0..n of the listed dimensions of a digital sequence, each word passed through
+    /// `map(word, dim)` (e.g. a scrambler; use `|x, _| x` for the plain sequence).
+    pub fn from_sequence(
+        seq: &gartowen_seq::DigitalSequence,
+        dims: &[usize],
+        n: u64,
+        map: impl Fn(u64, usize) -> u64,
+    ) -> Result<Self, NetError> {
+        let coords = dims
+            .iter()
+            .map(|&j| (0..n).map(|i| map(seq.point(i, j), j)).collect())
+            .collect();
+        PointSet::from_columns(seq.width(), coords)
+    }
+
     /// The word width W.
     pub fn width(&self) -> Width {
         self.width

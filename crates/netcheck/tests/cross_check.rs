@@ -11,11 +11,7 @@ use proptest::prelude::*;
 
 /// The first n points (natural order) of the given dimensions, as a point set.
 fn points(seq: &DigitalSequence, dims: &[usize], n: u64) -> PointSet {
-    let cols = dims
-        .iter()
-        .map(|&j| (0..n).map(|i| seq.point(i, j)).collect())
-        .collect();
-    PointSet::from_columns(seq.width(), cols).unwrap()
+    PointSet::from_sequence(seq, dims, n, |x, _| x).unwrap()
 }
 
 fn rows_of(p: &PointSet) -> Vec<Vec<u64>> {

@@ -6,10 +6,7 @@ use gartowen_netcheck::{CheckBase, PointSet};
 
 fn broken_sobol() -> PointSet {
     let seq = gartowen_seq::sobol::sequence(3, Width::W32).unwrap();
-    let cols = (0..3)
-        .map(|j| (0..4096u64).map(|i| seq.point(i, j)).collect())
-        .collect();
-    let mut p = PointSet::from_columns(Width::W32, cols).unwrap();
+    let mut p = PointSet::from_sequence(&seq, &[0, 1, 2], 4096, |x, _| x).unwrap();
     // Several independent defects, so threads racing over shapes could see different ones.
     for (i, j) in [(100, 0), (2000, 1), (3000, 2), (4000, 1)] {
         let other = p.column(j)[i + 1];
