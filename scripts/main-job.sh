@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The main job on a built-in default: `verify --level quick` over the whole registry, then
+# The main job: `verify --level quick` over the whole registry and over the external C example
+# (bit-exact against its built-in twin), then
 # generate the base-16 SZ sequence, Owen-scramble it with the exact oracle, and check that it is
 # still a (0,3,16)-net in base 16 and that the scramble is nested in base 16 (and, as the paper
 # predicts, not in base 2).
@@ -12,6 +13,13 @@ cargo build --release -q -p gartowen-cli
 g=target/release/gartowen
 
 $g verify --level quick --json "$out/verify_quick.json"
+
+# The external path: the C twin of owen-per-bit-hash, verified bit-exact against it.
+if command -v cc >/dev/null; then
+  cc -O2 -o "$out/owen_per_bit" examples/external/owen_per_bit.c
+  $g verify --external "$out/owen_per_bit" --base 2 --width 64 --expect owen-per-bit-hash \
+    --json "$out/verify_external.json"
+fi
 
 $g generate --seq sz16 --dims 16 --log2-n 12 --scramble owen-oracle --seed 1 --format npy -o "$out/sz16_owen.npy"
 $g check "$out/sz16_owen.npy" --base 16 --t 0 --json > "$out/check_sz16_owen.json"

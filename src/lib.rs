@@ -11,6 +11,8 @@ pub use gartowen_seq as seq;
 
 use gartowen_core::Registry;
 
+pub mod certificate;
+pub mod external;
 pub mod verify;
 
 /// Every scrambler gartowen knows, in one list; cross-checks iterate over it.

@@ -105,11 +105,8 @@ fn check_inverse(s: &dyn Scrambler, level: Level) -> (Verdict, String, Option<f6
     } else {
         100_000
     };
-    let mut rng = SplitMix64::new(0x1234);
-    for width in [Width::W32, Width::W64]
-        .into_iter()
-        .filter(|w| s.supports_width(*w))
-    {
+    let mut rng = SplitMix64::new(INVERSE_SEED);
+    for width in supported_widths(s) {
         for _ in 0..n {
             let x = rng.next_u64() & width.mask();
             let dim = rng.bounded(8);
@@ -133,19 +130,76 @@ fn check_inverse(s: &dyn Scrambler, level: Level) -> (Verdict, String, Option<f6
     )
 }
 
+/// For implementations without an inverse (external programs): images stay in range and
+/// distinct inputs of one dimension never collide.
+fn check_injective(s: &dyn Scrambler, level: Level) -> (Verdict, String, Option<f64>) {
+    let n = if level == Level::Quick { 4096 } else { 32_768 };
+    let mut rng = SplitMix64::new(INVERSE_SEED);
+    for width in supported_widths(s) {
+        for dim in 0..4u32 {
+            let mut inputs: Vec<u64> = (0..n).map(|_| rng.next_u64() & width.mask()).collect();
+            inputs.sort_unstable();
+            inputs.dedup();
+            let mut seen = std::collections::HashMap::with_capacity(inputs.len());
+            for &x in &inputs {
+                let y = s.scramble(x, width, dim);
+                if width.check(y).is_err() {
+                    return (
+                        Verdict::Fail,
+                        format!(
+                            "{}-bit word {x:#x} (dim {dim}) -> {y:#x} is out of range",
+                            width.bits()
+                        ),
+                        None,
+                    );
+                }
+                if let Some(other) = seen.insert(y, x) {
+                    return (
+                        Verdict::Fail,
+                        format!("not injective: {other:#x} and {x:#x} (dim {dim}) both -> {y:#x}"),
+                        None,
+                    );
+                }
+            }
+        }
+    }
+    (
+        Verdict::Pass,
+        format!("{n} words per dimension map to distinct in-range words (no inverse to test)"),
+        None,
+    )
+}
+
+fn supported_widths(s: &dyn Scrambler) -> Vec<Width> {
+    [Width::W32, Width::W64]
+        .into_iter()
+        .filter(|w| s.supports_width(*w))
+        .collect()
+}
+
+/// The width the battery scrambles at: 32 bits where supported, else 64.
+fn working_width(s: &dyn Scrambler) -> Width {
+    if s.supports_width(Width::W32) {
+        Width::W32
+    } else {
+        Width::W64
+    }
+}
+
 fn check_nested(s: &dyn Scrambler) -> (Verdict, String, Option<f64>) {
     let base = s.base();
     let w16 = Width::new(16).expect("16");
     let report = if s.supports_width(w16) {
         inspect_exhaustive(&|x| s.scramble(x, w16, 0), w16, base, 16)
     } else {
+        let w = working_width(s);
         inspect_probes(
-            &|x| s.scramble(x, Width::W32, 0),
-            Width::W32,
+            &|x| s.scramble(x, w, 0),
+            w,
             base,
-            32,
+            w.bits(),
             2000,
-            1,
+            PROBE_SEED,
         )
     };
     match report.first_violation {
@@ -187,17 +241,22 @@ fn check_nets(s: &dyn Scrambler, level: Level) -> (Verdict, String, Option<f64>)
             )
         }
     };
-    if !s.supports_width(Width::W32) {
-        return (Verdict::Skipped, "32-bit words unsupported".into(), None);
+    let width = working_width(s);
+    if !s.supports_width(width) {
+        return (
+            Verdict::Skipped,
+            "neither 32- nor 64-bit words".into(),
+            None,
+        );
     }
     let seq = kind
-        .build(dims.iter().max().unwrap() + 1, Width::W32)
+        .build(dims.iter().max().unwrap() + 1, width)
         .expect("built-in");
     let q = kind.base().q();
     for m in 1..=max_m {
         let expected = rank::t_value(&seq, &dims, q, m).expect("rank path");
         let p = PointSet::from_sequence(&seq, &dims, 1u64 << (q * m), |x, j| {
-            s.scramble(x, Width::W32, j as u32)
+            s.scramble(x, width, j as u32)
         })
         .expect("points");
         let got = t_value(
@@ -227,33 +286,28 @@ fn check_nets(s: &dyn Scrambler, level: Level) -> (Verdict, String, Option<f64>)
     )
 }
 
-/// The node-law statistics of `request` over `seeds` seeds: (χ², dof, total variation, affine fraction).
+/// The node-law statistics over `seeds` instances built by `with_seed`:
+/// (χ², dof, total variation, affine fraction).
 fn node_law(
-    registry: &Registry,
-    request: &str,
+    with_seed: &SeedBuilder,
     base: PowerOfTwoBase,
     seeds: u64,
-) -> Result<(f64, usize, f64, Option<f64>), CoreError> {
+) -> Result<(f64, usize, f64, Option<f64>), String> {
     let b = base.base();
     let cells = match b {
         2..=4 => (1..=b as usize).product::<usize>(),
         8 | 16 => (b * (b - 1)) as usize,
         _ => b as usize,
     };
-    let layout = DigitLayout::new(Width::W32, base);
-    let prefix = layout.set(0, 1, 1);
     let mut counts = vec![0u64; cells];
     let mut affine = 0u64;
     for seed in 0..seeds {
-        let s = registry.build_with(
-            request,
-            &BuildContext {
-                seed,
-                default_base: base,
-            },
-        )?;
+        let s = with_seed(seed)?;
+        let width = working_width(s.as_ref());
+        let layout = DigitLayout::new(width, base);
+        let prefix = layout.set(0, 1, 1);
         let images: Vec<u8> = (0..b)
-            .map(|d| layout.get(s.scramble(layout.set(prefix, 2, d), Width::W32, 0), 2) as u8)
+            .map(|d| layout.get(s.scramble(layout.set(prefix, 2, d), width, 0), 2) as u8)
             .collect();
         let Ok(p) = Permutation::from_images(&images) else {
             continue;
@@ -268,6 +322,9 @@ fn node_law(
         }
     }
     let total: u64 = counts.iter().sum();
+    if total == 0 {
+        return Err("no node permutation was a bijection".into());
+    }
     let e = total as f64 / cells as f64;
     let chi2 = counts.iter().map(|&c| (c as f64 - e).powi(2) / e).sum();
     let tv = 0.5
@@ -329,6 +386,206 @@ pub fn merge(parts: Vec<Vec<ImplReport>>) -> Result<Vec<ImplReport>, String> {
     Ok(all)
 }
 
+/// Builds the instance of an implementation for one seed.
+pub type SeedBuilder<'a> = dyn Fn(u64) -> Result<Box<dyn Scrambler + 'a>, String> + 'a;
+
+/// One implementation as the battery sees it, however it is reached (registry or external).
+pub struct Candidate<'a> {
+    /// Position in the list being verified.
+    pub index: usize,
+    /// Name for the report.
+    pub name: String,
+    /// The instance with the run's seed (0 for registry entries).
+    pub probe: Box<dyn Scrambler + 'a>,
+    /// Instances for other seeds (the node law draws thousands).
+    pub with_seed: Box<SeedBuilder<'a>>,
+    /// Whether `unscramble` is a real inverse (false for external programs: the battery then
+    /// checks injectivity instead).
+    pub invertible: bool,
+    /// A failure of the transport, checked after every check (external programs).
+    pub health: Box<dyn Fn() -> Option<String> + 'a>,
+    /// A built-in twin the implementation must agree with bit for bit (`--expect`).
+    pub twin: Option<(String, Box<SeedBuilder<'a>>)>,
+}
+
+/// Bit-exact agreement with the twin on seeds 0..4, dimensions 0..8 and 512 words each
+/// (0, the largest word, and seeded random words).
+fn check_twin(
+    c: &Candidate,
+    twin_name: &str,
+    twin: &SeedBuilder,
+    level: Level,
+) -> (Verdict, String, Option<f64>) {
+    let words = if level == Level::Quick { 512 } else { 4096 };
+    let width = working_width(c.probe.as_ref());
+    let mut rng = SplitMix64::new(TWIN_SEED);
+    let mut compared = 0u64;
+    for seed in 0..4u64 {
+        let (mine, theirs) = match (c.with_seed.as_ref()(seed), twin(seed)) {
+            (Ok(a), Ok(b)) => (a, b),
+            (Err(e), _) | (_, Err(e)) => {
+                return (
+                    Verdict::Fail,
+                    format!("cannot build seed {seed}: {e}"),
+                    None,
+                )
+            }
+        };
+        if !theirs.supports_width(width) {
+            return (
+                Verdict::Fail,
+                format!("{twin_name} does not support {}-bit words", width.bits()),
+                None,
+            );
+        }
+        for dim in 0..8u32 {
+            for k in 0..words {
+                let x = match k {
+                    0 => 0,
+                    1 => width.mask(),
+                    _ => rng.next_u64() & width.mask(),
+                };
+                let (a, b) = (mine.scramble(x, width, dim), theirs.scramble(x, width, dim));
+                if a != b {
+                    return (
+                        Verdict::Fail,
+                        format!(
+                            "seed {seed}, dim {dim}, word {x:#x}: got {a:#x}, {twin_name} gives {b:#x}"
+                        ),
+                        None,
+                    );
+                }
+                compared += 1;
+            }
+        }
+    }
+    (
+        Verdict::Pass,
+        format!(
+            "bit-exact with {twin_name} on {compared} {}-bit words (seeds 0..4, dims 0..8)",
+            width.bits()
+        ),
+        None,
+    )
+}
+
+/// The number of independent instances (seeds 0, 1, …) the node law draws at `level`.
+pub fn node_law_seeds(level: Level) -> u64 {
+    match level {
+        Level::Quick => 2000,
+        Level::Full => 20_000,
+        Level::Exhaustive => 50_000,
+    }
+}
+
+/// Every fixed seed the battery uses: the main instance's seed, then the seeds of the inverse
+/// sample, the inspector's probes and the twin comparison. Node-law instances use seeds
+/// 0..[`node_law_seeds`].
+pub fn seeds_used(main_seed: u64) -> Vec<u64> {
+    vec![main_seed, INVERSE_SEED, PROBE_SEED, TWIN_SEED]
+}
+
+const INVERSE_SEED: u64 = 0x1234;
+const PROBE_SEED: u64 = 1;
+const TWIN_SEED: u64 = 0xE8EC7;
+
+/// Runs every check on one candidate; `claimants` is the number of implementations in the
+/// whole run that claim nested uniformity (the node-law test's Bonferroni divisor).
+pub fn check_candidate(c: &Candidate, level: Level, claimants: usize) -> ImplReport {
+    let seeds = node_law_seeds(level);
+    let probe = c.probe.as_ref();
+    let base = probe.base();
+    let claims = probe.claims_nested_uniform();
+    // A transport failure turns the check that met it into a failure naming it.
+    let guarded = |check: &str, f: &dyn Fn() -> (Verdict, String, Option<f64>)| {
+        let mut r = timed(check, f);
+        if let Some(e) = (c.health)() {
+            r.verdict = Verdict::Fail;
+            r.detail = format!("external program failed: {e}");
+            r.value = None;
+        }
+        r
+    };
+    let mut checks = vec![
+        if c.invertible {
+            guarded("inverse", &|| check_inverse(probe, level))
+        } else {
+            guarded("injective", &|| check_injective(probe, level))
+        },
+        guarded("nested", &|| check_nested(probe)),
+        guarded("nets", &|| check_nets(probe, level)),
+    ];
+    checks.push(guarded("node-law", &|| {
+        let (chi2, dof, tv, affine) = match node_law(c.with_seed.as_ref(), base, seeds) {
+            Ok(law) => law,
+            Err(e) => {
+                return (
+                    Verdict::Fail,
+                    format!("could not build per-seed instances: {e}"),
+                    None,
+                )
+            }
+        };
+        let critical = ChiSquared::new(dof as f64)
+            .expect("dof ≥ 1")
+            .inverse_cdf(1.0 - 1e-3 / claimants.max(1) as f64);
+        let looks_affine = affine.is_some_and(|a| a > 0.5);
+        let detail = format!(
+            "chi-square {chi2:.1} (critical {critical:.1}, {dof} dof), TV {tv:.3}{}",
+            affine.map_or(String::new(), |a| format!(", affine fraction {a:.3}"))
+        );
+        let verdict = if !claims {
+            Verdict::Measured
+        } else if chi2 < critical && !looks_affine {
+            Verdict::Pass
+        } else {
+            Verdict::Fail
+        };
+        (verdict, detail, Some(chi2))
+    }));
+    if let Some((twin_name, twin)) = &c.twin {
+        checks.push(guarded("expect", &|| {
+            check_twin(c, twin_name, twin.as_ref(), level)
+        }));
+    }
+    ImplReport {
+        index: c.index,
+        name: c.name.clone(),
+        base: base.base(),
+        claims_nested_uniform: claims,
+        checks,
+    }
+}
+
+/// The candidate for registry entry `request` at position `index`.
+pub fn registry_candidate<'a>(
+    registry: &'a Registry,
+    request: &'a str,
+    index: usize,
+) -> Result<Candidate<'a>, CoreError> {
+    let probe = registry.build(request, 0)?;
+    let base = probe.base();
+    Ok(Candidate {
+        index,
+        name: probe.name(),
+        probe,
+        with_seed: Box::new(move |seed| {
+            registry
+                .build_with(
+                    request,
+                    &BuildContext {
+                        seed,
+                        default_base: base,
+                    },
+                )
+                .map_err(|e| e.to_string())
+        }),
+        invertible: true,
+        health: Box::new(|| None),
+        twin: None,
+    })
+}
+
 /// Runs the battery on the named implementations (all of the registry's when `names` is empty).
 pub fn verify(
     registry: &Registry,
@@ -359,59 +616,54 @@ pub fn verify_shard(
         .iter()
         .filter_map(|n| registry.build(n, 0).ok())
         .filter(|s| s.claims_nested_uniform())
-        .count()
-        .max(1);
-    let seeds = match level {
-        Level::Quick => 2000,
-        Level::Full => 20_000,
-        Level::Exhaustive => 50_000,
-    };
+        .count();
     let mut out = Vec::new();
     for (index, name) in names.iter().enumerate().filter(|(k, _)| shard.contains(*k)) {
-        let probe = registry.build(name, 0)?;
-        let base = probe.base();
-        let claims = probe.claims_nested_uniform();
-        let mut checks = vec![
-            timed("inverse", || check_inverse(probe.as_ref(), level)),
-            timed("nested", || check_nested(probe.as_ref())),
-            timed("nets", || check_nets(probe.as_ref(), level)),
-        ];
-        checks.push(timed("node-law", || {
-            let (chi2, dof, tv, affine) = match node_law(registry, name, base, seeds) {
-                Ok(law) => law,
-                Err(e) => {
-                    return (
-                        Verdict::Fail,
-                        format!("could not build per-seed instances: {e}"),
-                        None,
-                    )
-                }
-            };
-            let critical = ChiSquared::new(dof as f64)
-                .expect("dof ≥ 1")
-                .inverse_cdf(1.0 - 1e-3 / claimants as f64);
-            let looks_affine = affine.is_some_and(|a| a > 0.5);
-            let detail = format!(
-                "chi-square {chi2:.1} (critical {critical:.1}, {dof} dof), TV {tv:.3}{}",
-                affine.map_or(String::new(), |a| format!(", affine fraction {a:.3}"))
-            );
-            let verdict = if !claims {
-                Verdict::Measured
-            } else if chi2 < critical && !looks_affine {
-                Verdict::Pass
-            } else {
-                Verdict::Fail
-            };
-            (verdict, detail, Some(chi2))
-        }));
+        let candidate = registry_candidate(registry, name, index)?;
+        out.push(check_candidate(&candidate, level, claimants));
         progress(name);
-        out.push(ImplReport {
-            index,
-            name: probe.name(),
-            base: base.base(),
-            claims_nested_uniform: claims,
-            checks,
-        });
     }
     Ok(out)
+}
+
+/// The candidate for an external program: instances for every seed share the one process;
+/// `twin` names a registry entry it must match bit for bit.
+pub fn external_candidate<'a>(
+    process: std::sync::Arc<crate::external::ExternalProcess>,
+    seed: u64,
+    claims_uniform: bool,
+    twin: Option<(&'a Registry, &'a str)>,
+) -> Candidate<'a> {
+    use crate::external::ExternalScrambler;
+    let base = process.base();
+    let for_seed = process.clone();
+    let watched = process.clone();
+    Candidate {
+        index: 0,
+        name: format!("external:{}", process.command()),
+        probe: Box::new(ExternalScrambler::new(process, seed, claims_uniform)),
+        with_seed: Box::new(move |s| {
+            Ok(Box::new(ExternalScrambler::new(
+                for_seed.clone(),
+                s,
+                claims_uniform,
+            )))
+        }),
+        invertible: false,
+        health: Box::new(move || watched.failure().map(|e| e.to_string())),
+        twin: twin.map(|(registry, request)| {
+            let build: Box<SeedBuilder<'a>> = Box::new(move |s| {
+                registry
+                    .build_with(
+                        request,
+                        &BuildContext {
+                            seed: s,
+                            default_base: base,
+                        },
+                    )
+                    .map_err(|e| e.to_string())
+            });
+            (request.to_string(), build)
+        }),
+    }
 }

@@ -19,6 +19,19 @@ pub enum InputFormat {
     Hex,
 }
 
+/// The certificate record of a point file: its path, the FNV-1a checksum of its words
+/// (row-major, little-endian) and its shape.
+pub fn file_record(path: &Path, points: &PointSet) -> gartowen::certificate::InputRecord {
+    gartowen::certificate::InputRecord {
+        kind: "file".into(),
+        name: path.display().to_string(),
+        checksum_fnv1a64: Some(format!("{:016x}", points.checksum())),
+        details: serde_json::json!({
+            "points": points.len(), "dims": points.dims(), "width_bits": points.width().bits(),
+        }),
+    }
+}
+
 fn bad(path: &Path, msg: impl std::fmt::Display) -> CliError {
     CliError::Usage(format!("{}: {msg}", path.display()))
 }
@@ -202,4 +215,101 @@ fn read_hex(path: &Path, bytes: &[u8]) -> Result<PointSet, CliError> {
         Width::W64
     };
     PointSet::from_flat(width, dims, &words).map_err(|e| bad(path, e))
+}
+
+/// Fuzzing of the readers: arbitrary and mutated inputs must give a point set or a named
+/// error, never a panic, an abort or an allocation the input does not justify.
+#[cfg(test)]
+mod fuzz {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn npy_header(descr: &str, fortran: bool, shape: &str) -> Vec<u8> {
+        let dict = format!(
+            "{{'descr': '{descr}', 'fortran_order': {}, 'shape': {shape}, }}",
+            if fortran { "True" } else { "False" }
+        );
+        let mut header = dict.into_bytes();
+        while (10 + header.len() + 1) % 64 != 0 {
+            header.push(b' ');
+        }
+        header.push(b'\n');
+        let mut out = b"\x93NUMPY\x01\x00".to_vec();
+        out.extend_from_slice(&(header.len() as u16).to_le_bytes());
+        out.extend_from_slice(&header);
+        out
+    }
+
+    fn valid_npy(rows: usize, dims: usize, fortran: bool) -> Vec<u8> {
+        let mut out = npy_header("<f8", fortran, &format!("({rows}, {dims})"));
+        for k in 0..rows * dims {
+            out.extend_from_slice(&((k as f64 + 0.5) / (rows * dims) as f64).to_le_bytes());
+        }
+        out
+    }
+
+    fn all_readers(bytes: &[u8]) {
+        let p = Path::new("fuzz");
+        for r in [read_npy, read_csv, read_hex] {
+            if let Ok(set) = r(p, bytes) {
+                assert!(set.len() >= 1 && set.dims() >= 1);
+            }
+        }
+    }
+
+    #[test]
+    fn headers_that_claim_more_data_than_the_file_holds_are_refused() {
+        // A shape of 2^40 rows over 16 data bytes must be an error, not an attempt to
+        // allocate terabytes (npyz checks the data length against the shape; this pins it).
+        for shape in [
+            "(1099511627776, 1)",
+            "(2, 9223372036854775807)",
+            "(4611686018427387904,)",
+        ] {
+            let mut bytes = npy_header("<f8", false, shape);
+            bytes.extend_from_slice(&[0u8; 16]);
+            let e = read_npy(Path::new("big.npy"), &bytes)
+                .err()
+                .expect("refused");
+            assert!(e.to_string().contains("big.npy"), "{e}");
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 2000, ..ProptestConfig::default() })]
+
+        #[test]
+        fn arbitrary_bytes_never_panic(bytes in proptest::collection::vec(any::<u8>(), 0..256)) {
+            all_readers(&bytes);
+        }
+
+        #[test]
+        fn mutated_npy_files_never_panic(
+            rows in 1usize..6, dims in 1usize..4, fortran in any::<bool>(),
+            edits in proptest::collection::vec((any::<u16>(), any::<u8>()), 1..6),
+            cut in any::<u16>(),
+        ) {
+            let mut bytes = valid_npy(rows, dims, fortran);
+            for (at, v) in edits {
+                let i = at as usize % bytes.len();
+                bytes[i] = v;
+            }
+            let keep = bytes.len() - (cut as usize % 8).min(bytes.len());
+            bytes.truncate(keep);
+            all_readers(&bytes);
+        }
+
+        #[test]
+        fn text_from_the_format_alphabets_never_panics(
+            text in "[0-9a-fA-Fx.,eE+\\- #\\n]{0,200}"
+        ) {
+            all_readers(text.as_bytes());
+        }
+
+        #[test]
+        fn valid_files_read_back(rows in 1usize..20, dims in 1usize..5, fortran in any::<bool>()) {
+            let set = read_npy(Path::new("ok.npy"), &valid_npy(rows, dims, fortran)).unwrap();
+            prop_assert_eq!((set.len(), set.dims()), (rows, dims));
+        }
+    }
 }

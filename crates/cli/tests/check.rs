@@ -30,10 +30,12 @@ fn sz16_is_a_0_3_16_net_and_a_mutation_fails_with_exit_1() {
     let o = gartowen(&["check", &good, "--base", "16", "--t", "0", "--json"]);
     assert_eq!(o.status.code(), Some(0));
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
-    assert_eq!(v["holds"], true);
+    assert_eq!(v["verdict"], "pass");
+    assert_eq!(v["schema"], "gartowen-certificate");
+    assert_eq!(v["schema_version"], 1);
     assert_eq!(v["result"]["m"], 3);
     assert_eq!(v["result"]["shapes_checked"], 816);
-    assert_eq!(v["input"]["points"], 4096);
+    assert_eq!(v["inputs"][0]["details"]["points"], 4096);
 
     // Copy point 8's coordinate 3 onto point 7: two points share a box of shape d_3 ≥ 1.
     let text = std::fs::read_to_string(&good).unwrap();
@@ -65,7 +67,7 @@ fn sz16_is_a_0_3_16_net_and_a_mutation_fails_with_exit_1() {
         f["shape"][3].as_u64().unwrap() >= 1,
         "the mutated dimension is refined: {f}"
     );
-    assert_ne!(v["input"]["checksum_fnv1a64"], serde_json::Value::Null);
+    assert_ne!(v["inputs"][0]["checksum_fnv1a64"], serde_json::Value::Null);
 }
 
 #[test]

@@ -82,7 +82,7 @@ fn methods_agree_and_json_carries_the_fields() {
     );
     assert!((r * r - s).abs() <= 1e-15 * s);
     let pairs = json(&gartowen(&["discrepancy", f, "--pairs", "all", "--json"]));
-    assert_eq!(pairs["pairs"].as_array().unwrap().len(), 3);
+    assert_eq!(pairs["result"]["pairs"].as_array().unwrap().len(), 3);
 }
 
 #[test]

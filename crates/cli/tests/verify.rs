@@ -35,7 +35,7 @@ fn verify_named_implementations_writes_json_and_exits_0() {
     );
     let v: serde_json::Value = serde_json::from_slice(&std::fs::read(&json).unwrap()).unwrap();
     assert_eq!(v["command"], "verify");
-    let imps = v["implementations"].as_array().unwrap();
+    let imps = v["result"]["implementations"].as_array().unwrap();
     assert_eq!(imps.len(), 2);
     assert_eq!(imps[0]["checks"].as_array().unwrap().len(), 4);
     assert_eq!(
@@ -91,7 +91,7 @@ fn merged_shards_equal_one_unsharded_run() {
     let strip = |file: &str| {
         let mut v: serde_json::Value =
             serde_json::from_str(&std::fs::read_to_string(path(file)).unwrap()).unwrap();
-        for imp in v["implementations"].as_array_mut().unwrap() {
+        for imp in v["result"]["implementations"].as_array_mut().unwrap() {
             for c in imp["checks"].as_array_mut().unwrap() {
                 c["seconds"] = serde_json::Value::Null;
             }
@@ -119,4 +119,86 @@ fn merged_shards_equal_one_unsharded_run() {
         gartowen(&["verify", "--shard", "0/3"]).status.code(),
         Some(2)
     );
+}
+
+/// Compiles one of the C examples under examples/external into `dir`.
+fn build_example(dir: &std::path::Path, name: &str) -> String {
+    let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../examples/external")
+        .join(format!("{name}.c"));
+    let out = dir.join(name);
+    let status = std::process::Command::new("cc")
+        .args(["-O2", "-o"])
+        .arg(&out)
+        .arg(src)
+        .status()
+        .expect("cc");
+    assert!(status.success());
+    out.to_str().unwrap().to_string()
+}
+
+#[test]
+fn external_programs_are_verified_with_a_certificate() {
+    let dir = tempfile::tempdir().unwrap();
+    let good = build_example(dir.path(), "owen_per_bit");
+    let broken = build_example(dir.path(), "broken_hash");
+    let cert = dir.path().join("ext.json");
+    let o = gartowen(&[
+        "verify",
+        "--external",
+        &good,
+        "--base",
+        "2",
+        "--width",
+        "64",
+        "--expect",
+        "owen-per-bit-hash",
+        "--json",
+        cert.to_str().unwrap(),
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stdout)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&std::fs::read(&cert).unwrap()).unwrap();
+    assert_eq!(v["schema"], "gartowen-certificate");
+    assert_eq!(v["verdict"], "pass");
+    assert_eq!(v["parameters"]["external"]["expect"], "owen-per-bit-hash");
+    assert_eq!(v["inputs"][0]["kind"], "program");
+    assert_eq!(
+        v["inputs"][0]["checksum_fnv1a64"].as_str().unwrap().len(),
+        16,
+        "the program's bytes are checksummed"
+    );
+    let checks = &v["result"]["implementations"][0]["checks"];
+    assert_eq!(checks[4]["check"], "expect");
+    assert_eq!(checks[4]["verdict"], "pass");
+
+    let o = gartowen(&["verify", "--external", &broken, "--base", "2"]);
+    assert_eq!(o.status.code(), Some(1));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains("FAIL nested: NotNested at depth"), "{text}");
+
+    // Bad usage: exit 2, a message naming the value, no certificate written.
+    let none = dir.path().join("none.json");
+    for args in [
+        vec!["--width", "16"],
+        vec!["--base", "3"],
+        vec!["--expect", "no-such-scrambler"],
+        vec!["--expect", "art-owen-16p"],
+        vec!["--timeout", "NaN"],
+    ] {
+        let mut all = vec!["verify", "--external", good.as_str()];
+        all.extend(args.iter().copied());
+        all.extend(["--json", none.to_str().unwrap()]);
+        let o = gartowen(&all);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert!(!o.stderr.is_empty());
+        assert!(!none.exists());
+    }
+    let o = gartowen(&["verify", "--external", "/nonexistent/prog"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("cannot start '/nonexistent/prog'"));
 }

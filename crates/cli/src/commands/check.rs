@@ -3,6 +3,7 @@
 use crate::input::{read_points, InputFormat};
 use crate::CliError;
 use clap::Args;
+use gartowen::certificate::{CertVerdict, Certificate};
 use gartowen::netcheck::counting::{
     self, check_net_with_progress, check_sequence_with_progress, histograms, implied_m,
     t_value_with_witness,
@@ -128,24 +129,29 @@ pub fn run(a: CheckArgs) -> Result<ExitCode, CliError> {
         ),
         None => None,
     };
-    let input = json!({
-        "path": a.file.display().to_string(),
-        "points": points.len(),
-        "dims": points.dims(),
-        "width_bits": points.width().bits(),
-        "checksum_fnv1a64": format!("{:016x}", points.checksum()),
-    });
+    let input = crate::input::file_record(&a.file, &points);
     let (holds, result, text) = if a.sequence {
         run_sequence(&a, base, &points, projections.as_deref())?
     } else {
         run_net(&a, base, &points, projections.as_deref())?
     };
     if a.json {
-        let doc = json!({
-            "tool": "gartowen", "version": env!("CARGO_PKG_VERSION"), "command": "check",
-            "input": input, "base": base.get(), "holds": holds, "result": result,
-        });
-        println!("{}", serde_json::to_string_pretty(&doc).expect("json"));
+        let cert = Certificate::new(
+            "check",
+            if holds {
+                CertVerdict::Pass
+            } else {
+                CertVerdict::Fail
+            },
+            json!({
+                "base": base.get(), "m": a.m, "t": a.t, "sequence": a.sequence,
+                "projections": a.projections, "histograms": a.histograms,
+            }),
+            vec![],
+            vec![input],
+            result,
+        );
+        println!("{}", cert.to_json());
     } else {
         print!("{text}");
     }

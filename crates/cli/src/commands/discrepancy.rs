@@ -3,6 +3,7 @@
 use crate::input::{read_points, InputFormat};
 use crate::CliError;
 use clap::{Args, ValueEnum};
+use gartowen::certificate::{CertVerdict, Certificate};
 use gartowen::discrepancy::{compensated, exact, fast2d, naive, Discrepancy, Kind, Points};
 use serde_json::json;
 use std::path::PathBuf;
@@ -148,14 +149,18 @@ pub fn run(a: DiscrepancyArgs) -> Result<ExitCode, CliError> {
         }
     }
     if a.json {
-        let doc = json!({
-            "tool": "gartowen", "version": env!("CARGO_PKG_VERSION"), "command": "discrepancy",
-            "input": { "path": a.file.display().to_string(), "points": n, "dims": d,
-                       "checksum_fnv1a64": format!("{:016x}", set.checksum()) },
-            "result": report(&joint, secs, a.root),
-            "pairs": pair_reports,
-        });
-        println!("{}", serde_json::to_string_pretty(&doc).expect("json"));
+        let mut result = report(&joint, secs, a.root);
+        result["pairs"] = json!(pair_reports);
+        let doc = Certificate::new(
+            "discrepancy",
+            CertVerdict::Measured,
+            json!({ "kind": kind.name(), "method": format!("{:?}", a.method).to_lowercase(),
+                    "pairs": a.pairs.map(|p| format!("{p:?}").to_lowercase()), "root": a.root }),
+            vec![],
+            vec![crate::input::file_record(&a.file, &set)],
+            result,
+        );
+        println!("{}", doc.to_json());
     } else {
         let label = if a.root { "D" } else { "D^2" };
         println!(

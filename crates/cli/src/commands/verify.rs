@@ -2,9 +2,16 @@
 
 use crate::CliError;
 use clap::{Args, ValueEnum};
-use gartowen::verify::{merge, verify_shard, ImplReport, Level, Shard, Verdict};
+use gartowen::certificate::{fnv1a64, CertVerdict, Certificate, InputRecord};
+use gartowen::core::{PowerOfTwoBase, Width};
+use gartowen::external::ExternalProcess;
+use gartowen::verify::{
+    check_candidate, external_candidate, merge, verify_shard, ImplReport, Level, Shard, Verdict,
+};
 use std::path::PathBuf;
 use std::process::ExitCode;
+use std::sync::Arc;
+use std::time::Duration;
 
 /// Battery size.
 #[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
@@ -28,6 +35,10 @@ pub enum LevelArg {
 ///   gartowen verify --impl art-owen-16p --impl lk-hash --json verify.json
 ///   gartowen verify --level exhaustive --shard 2/4 --json shard2.json     (one CI job of four)
 ///   gartowen verify --merge shard1.json shard2.json shard3.json shard4.json --json all.json
+///
+/// External implementations (the protocol is in the README, "External implementations"):
+///   gartowen verify --external './my_scrambler --fast' --base 16 --width 32
+///   gartowen verify --external ./owen_per_bit --base 2 --width 64 --expect owen-per-bit-hash
 #[derive(Args, Debug)]
 #[command(verbatim_doc_comment)]
 pub struct VerifyArgs {
@@ -46,6 +57,28 @@ pub struct VerifyArgs {
     /// Combine shard JSON files (from --json) into one report instead of running checks.
     #[arg(long, num_args = 1.., conflicts_with_all = ["shard", "implementations"])]
     pub merge: Vec<PathBuf>,
+    /// Verify an external program speaking the gartowen protocol instead of the registry
+    /// (the command line is split on spaces; quotes group; no shell is involved).
+    #[arg(long, conflicts_with_all = ["shard", "implementations", "merge"])]
+    pub external: Option<String>,
+    /// Scrambling base of the external program (a power of two, 2..=256).
+    #[arg(long, default_value_t = 2, requires = "external")]
+    pub base: u64,
+    /// Word width the external program receives: 32 or 64.
+    #[arg(long, default_value_t = 32, requires = "external")]
+    pub width: u32,
+    /// Seed of the external program's main instance (the node law uses seeds 0, 1, 2, …).
+    #[arg(long, default_value_t = 0, requires = "external")]
+    pub seed: u64,
+    /// Require bit-exact agreement with this built-in implementation (registry name).
+    #[arg(long, requires = "external")]
+    pub expect: Option<String>,
+    /// Seconds to wait for each reply before the program is killed.
+    #[arg(long, default_value_t = 10.0, requires = "external")]
+    pub timeout: f64,
+    /// The external program does not claim nested uniformity: measure the node law, no verdict.
+    #[arg(long, requires = "external")]
+    pub no_uniform_claim: bool,
 }
 
 fn level_name(level: Level) -> &'static str {
@@ -56,22 +89,23 @@ fn level_name(level: Level) -> &'static str {
     }
 }
 
-/// Reads shard files and merges them; all must come from the same level.
+/// Reads shard certificates and merges them; all must come from the same level.
 fn merged(paths: &[PathBuf]) -> Result<(Level, Vec<ImplReport>), CliError> {
     let mut level = None;
     let mut parts = Vec::new();
     for p in paths {
         let text = std::fs::read_to_string(p)
             .map_err(|e| CliError::Io(format!("cannot read {}: {e}", p.display())))?;
-        let doc: serde_json::Value = serde_json::from_str(&text)
-            .map_err(|e| CliError::Usage(format!("{}: not JSON: {e}", p.display())))?;
-        if doc["command"] != "verify" {
+        let cert = Certificate::parse(&text)
+            .map_err(|e| CliError::Usage(format!("{}: {e}", p.display())))?;
+        if cert.command != "verify" {
             return Err(CliError::Usage(format!(
-                "{} is not a verify report",
-                p.display()
+                "{} is a '{}' certificate, not a verify report",
+                p.display(),
+                cert.command
             )));
         }
-        let l: Level = serde_json::from_value(doc["level"].clone())
+        let l: Level = serde_json::from_value(cert.parameters["level"].clone())
             .map_err(|e| CliError::Usage(format!("{}: bad level: {e}", p.display())))?;
         if level.is_some_and(|x| x != l) {
             return Err(CliError::Usage(format!(
@@ -80,24 +114,120 @@ fn merged(paths: &[PathBuf]) -> Result<(Level, Vec<ImplReport>), CliError> {
             )));
         }
         level = Some(l);
-        let reports: Vec<ImplReport> = serde_json::from_value(doc["implementations"].clone())
-            .map_err(|e| CliError::Usage(format!("{}: bad report: {e}", p.display())))?;
+        let reports: Vec<ImplReport> =
+            serde_json::from_value(cert.result["implementations"].clone())
+                .map_err(|e| CliError::Usage(format!("{}: bad report: {e}", p.display())))?;
+        if cert.inputs.iter().any(|i| i.kind != "registry") {
+            return Err(CliError::Usage(format!(
+                "{} verifies an external program; only registry shards merge",
+                p.display()
+            )));
+        }
         parts.push(reports);
     }
     let all = merge(parts).map_err(CliError::Usage)?;
     Ok((level.expect("at least one file"), all))
 }
 
+/// The certificate's records of registry implementations, in report order.
+fn registry_inputs(reports: &[ImplReport]) -> Vec<InputRecord> {
+    reports
+        .iter()
+        .map(|r| InputRecord {
+            kind: "registry".into(),
+            name: r.name.clone(),
+            checksum_fnv1a64: None,
+            details: serde_json::json!({ "base": r.base }),
+        })
+        .collect()
+}
+
+/// Runs the battery on an external program.
+fn run_external(a: &VerifyArgs, command: &str, level: Level) -> Result<ImplReport, CliError> {
+    let base = PowerOfTwoBase::from_base(a.base)
+        .map_err(|e| CliError::Usage(format!("--base {}: {e}", a.base)))?;
+    let width = match a.width {
+        32 => Width::W32,
+        64 => Width::W64,
+        w => {
+            return Err(CliError::Usage(format!(
+                "--width {w}: the protocol carries 32- or 64-bit words"
+            )))
+        }
+    };
+    if !(a.timeout.is_finite() && a.timeout > 0.0) {
+        return Err(CliError::Usage(format!(
+            "--timeout {} is not a positive number of seconds",
+            a.timeout
+        )));
+    }
+    let registry = gartowen::registry();
+    if let Some(name) = &a.expect {
+        let twin = registry
+            .build_with(
+                name,
+                &gartowen::core::BuildContext {
+                    seed: 0,
+                    default_base: base,
+                },
+            )
+            .map_err(|e| CliError::Usage(format!("--expect {name}: {e}")))?;
+        if twin.base() != base {
+            return Err(CliError::Usage(format!(
+                "--expect {name} scrambles in base {}, the program in base {}",
+                twin.base().base(),
+                base.base()
+            )));
+        }
+    }
+    let process = ExternalProcess::spawn(command, base, width, Duration::from_secs_f64(a.timeout))
+        .map_err(|e| CliError::Usage(e.to_string()))?;
+    let candidate = external_candidate(
+        Arc::new(process),
+        a.seed,
+        !a.no_uniform_claim,
+        a.expect.as_deref().map(|n| (&registry, n)),
+    );
+    Ok(check_candidate(
+        &candidate,
+        level,
+        usize::from(!a.no_uniform_claim),
+    ))
+}
+
+/// The certificate's record of an external program: its command line and, where the program
+/// file can be read, the checksum of its bytes.
+fn program_record(command: &str) -> InputRecord {
+    let program = gartowen::external::split_command(command)
+        .ok()
+        .and_then(|w| w.into_iter().next());
+    let checksum = program
+        .as_ref()
+        .and_then(|p| std::fs::read(p).ok())
+        .map(|bytes| format!("{:016x}", fnv1a64(&bytes)));
+    InputRecord {
+        kind: "program".into(),
+        name: command.into(),
+        checksum_fnv1a64: checksum,
+        details: serde_json::json!({ "program": program }),
+    }
+}
+
 /// Runs `verify`.
 pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
-    let (level, reports) = if !a.merge.is_empty() {
-        merged(&a.merge)?
+    let level = match a.level {
+        LevelArg::Quick => Level::Quick,
+        LevelArg::Full => Level::Full,
+        LevelArg::Exhaustive => Level::Exhaustive,
+    };
+    let (level, reports, inputs) = if !a.merge.is_empty() {
+        let (level, reports) = merged(&a.merge)?;
+        let inputs = registry_inputs(&reports);
+        (level, reports, inputs)
+    } else if let Some(command) = &a.external {
+        let report = run_external(&a, command, level)?;
+        (level, vec![report], vec![program_record(command)])
     } else {
-        let level = match a.level {
-            LevelArg::Quick => Level::Quick,
-            LevelArg::Full => Level::Full,
-            LevelArg::Exhaustive => Level::Exhaustive,
-        };
         let shard = match &a.shard {
             None => Shard::ALL,
             Some(t) => Shard::parse(t).ok_or_else(|| {
@@ -120,11 +250,16 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
             bar.inc(1);
         })?;
         bar.finish_and_clear();
-        (level, reports)
+        let inputs = registry_inputs(&reports);
+        (level, reports, inputs)
     };
+    // External programs have no inverse; their first column is the injectivity check.
+    let first = reports
+        .first()
+        .map_or("inverse".to_string(), |r| r.checks[0].check.clone());
     println!(
         "{:<26} {:<12} {:<12} {:<12} {:<13} node-law detail",
-        "implementation", "inverse", "nested", "nets", "node-law"
+        "implementation", first, "nested", "nets", "node-law"
     );
     for r in &reports {
         let cell = |i: usize| {
@@ -144,7 +279,20 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
             cell(3),
             r.checks[3].detail
         );
-        for c in r.checks.iter().filter(|c| c.verdict == Verdict::Fail) {
+        for c in r.checks.iter().skip(4) {
+            println!(
+                "    {} {}: {}",
+                format!("{:?}", c.verdict).to_uppercase(),
+                c.check,
+                c.detail
+            );
+        }
+        for c in r
+            .checks
+            .iter()
+            .take(4)
+            .filter(|c| c.verdict == Verdict::Fail)
+        {
             println!("    FAIL {}: {}", c.check, c.detail);
         }
     }
@@ -155,12 +303,32 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
         level_name(level)
     );
     if let Some(path) = &a.json {
-        let doc = serde_json::json!({
-            "tool": "gartowen", "version": env!("CARGO_PKG_VERSION"), "command": "verify",
-            "level": level, "implementations": reports,
+        let mut parameters = serde_json::json!({
+            "level": level,
+            "node_law_seeds": gartowen::verify::node_law_seeds(level),
         });
+        if let Some(command) = &a.external {
+            parameters["external"] = serde_json::json!({
+                "command": command, "base": a.base, "width": a.width, "seed": a.seed,
+                "expect": a.expect, "timeout_seconds": a.timeout,
+                "claims_nested_uniform": !a.no_uniform_claim,
+            });
+        }
+        let cert = Certificate::new(
+            "verify",
+            if failed == 0 {
+                CertVerdict::Pass
+            } else {
+                CertVerdict::Fail
+            },
+            parameters,
+            gartowen::verify::seeds_used(if a.external.is_some() { a.seed } else { 0 }),
+            inputs,
+            serde_json::json!({ "implementations": reports }),
+        );
         crate::output::write_atomically(Some(path), |out| {
-            serde_json::to_writer_pretty(&mut *out, &doc).map_err(|e| CliError::Io(e.to_string()))
+            out.write_all(cert.to_json().as_bytes())
+                .map_err(|e| CliError::Io(e.to_string()))
         })?;
     }
     Ok(if failed == 0 {

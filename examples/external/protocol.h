@@ -1,0 +1,61 @@
+/* The gartowen external-scrambler protocol, version 1 (see README.md, "External
+ * implementations"): little-endian request frames on stdin, replies on stdout.
+ *
+ * A scrambler includes this file, defines
+ *     uint64_t scramble(uint64_t x, unsigned width, uint32_t base, uint32_t dim, uint64_t seed);
+ * and calls serve(argv[0]) from main. */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static uint64_t scramble(uint64_t x, unsigned width, uint32_t base, uint32_t dim, uint64_t seed);
+
+static uint64_t get_le(const unsigned char *p, unsigned n) {
+    uint64_t v = 0;
+    for (unsigned i = 0; i < n; i++) v |= (uint64_t)p[i] << (8 * i);
+    return v;
+}
+
+static void put_le(unsigned char *p, uint64_t v, unsigned n) {
+    for (unsigned i = 0; i < n; i++) p[i] = (unsigned char)(v >> (8 * i));
+}
+
+static int serve(const char *self) {
+    unsigned char header[32];
+    static unsigned char buf[8u << 20];
+    for (;;) {
+        size_t got = fread(header, 1, sizeof header, stdin);
+        if (got == 0 && feof(stdin)) return 0; /* the host closed stdin: done */
+        if (got != sizeof header || memcmp(header, "GOWQ", 4) != 0) {
+            fprintf(stderr, "%s: bad request header\n", self);
+            return 3;
+        }
+        unsigned version = (unsigned)get_le(header + 4, 2);
+        unsigned width = (unsigned)get_le(header + 6, 2);
+        uint32_t base = (uint32_t)get_le(header + 8, 4);
+        uint32_t dim = (uint32_t)get_le(header + 12, 4);
+        uint32_t count = (uint32_t)get_le(header + 16, 4);
+        uint64_t seed = get_le(header + 24, 8);
+        if (version != 1 || (width != 32 && width != 64) || count == 0 || count > (1u << 20)) {
+            fprintf(stderr, "%s: unsupported request (version %u, width %u, count %u)\n", self,
+                    version, width, count);
+            return 3;
+        }
+        unsigned wb = width / 8;
+        if (fread(buf, wb, count, stdin) != count) {
+            fprintf(stderr, "%s: truncated request\n", self);
+            return 3;
+        }
+        unsigned char reply_header[8];
+        memcpy(reply_header, "GOWR", 4);
+        put_le(reply_header + 4, count, 4);
+        fwrite(reply_header, 1, sizeof reply_header, stdout);
+        for (uint32_t i = 0; i < count; i++) {
+            uint64_t y = scramble(get_le(buf + i * wb, wb), width, base, dim, seed);
+            put_le(buf + i * wb, y, wb);
+        }
+        fwrite(buf, wb, count, stdout);
+        fflush(stdout);
+    }
+}

@@ -1,0 +1,704 @@
+//! External scramblers: a child program that speaks the gartowen scrambling protocol on its
+//! stdin and stdout, wrapped as a [`Scrambler`] so the verify battery judges it like a built-in.
+//!
+//! # Protocol (version 1, every integer little-endian)
+//!
+//! The host sends request frames and the child answers each one before the next is sent:
+//!
+//! | offset | size | request field                                     |
+//! |--------|------|---------------------------------------------------|
+//! | 0      | 4    | magic `GOWQ` (bytes 0x47 0x4F 0x57 0x51)          |
+//! | 4      | 2    | protocol version, 1                               |
+//! | 6      | 2    | word width in bits, 32 or 64                      |
+//! | 8      | 4    | base b = 2^q                                      |
+//! | 12     | 4    | dimension (selects the independent scramble)      |
+//! | 16     | 4    | count n of words that follow (1 ≤ n ≤ 2^20)       |
+//! | 20     | 4    | reserved, 0                                       |
+//! | 24     | 8    | seed                                              |
+//! | 32     | n·w/8| the input words                                   |
+//!
+//! The reply is the magic `GOWR`, the count n again (u32), then the n scrambled words in order.
+//! The child exits with status 0 when its stdin closes. A child that cannot serve a request
+//! (unknown base or width) writes a reason to stderr and exits non-zero; the host reports the
+//! stderr text. Every request names its seed, so one process serves every seed the battery
+//! needs.
+//!
+//! Failures the host detects and names: the program cannot start, exits or dies by a signal,
+//! does not answer within the timeout (it is killed), answers with too few bytes, or answers
+//! with garbage (wrong magic or count). After the first failure the session is poisoned: every
+//! later call returns 0 without talking to the child, and [`ExternalProcess::failure`] names the
+//! first failure. The child runs in its own process group, and the whole group is killed when
+//! the session ends, so nothing is left running.
+
+use crate::core::{PowerOfTwoBase, Scrambler, Width};
+use std::fmt;
+use std::io::{Read, Write};
+use std::process::{Child, ChildStdin, Command, Stdio};
+use std::sync::mpsc::{self, Receiver, RecvTimeoutError};
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+/// Request magic, `GOWQ`.
+pub const REQUEST_MAGIC: [u8; 4] = *b"GOWQ";
+/// Reply magic, `GOWR`.
+pub const REPLY_MAGIC: [u8; 4] = *b"GOWR";
+/// Protocol version.
+pub const PROTOCOL_VERSION: u16 = 1;
+/// Most words in one request.
+pub const MAX_BATCH: usize = 1 << 20;
+/// Request header length in bytes.
+pub const HEADER_BYTES: usize = 32;
+
+/// A failure of the external program, in words a user can act on.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ExternalError {
+    /// The command line is empty or has an unbalanced quote.
+    BadCommand(String),
+    /// The program could not be started.
+    Spawn {
+        /// The program.
+        program: String,
+        /// The OS error.
+        reason: String,
+    },
+    /// The program exited (or was killed by a signal) before answering request `batch`.
+    Exited {
+        /// 1-based request number.
+        batch: u64,
+        /// Exit status in words.
+        status: String,
+        /// Bytes of the reply that did arrive.
+        received: usize,
+        /// Bytes the reply needed.
+        expected: usize,
+        /// The end of the program's stderr.
+        stderr: String,
+    },
+    /// No complete answer to request `batch` within the timeout; the program was killed.
+    Timeout {
+        /// 1-based request number.
+        batch: u64,
+        /// The timeout.
+        seconds: f64,
+        /// Bytes of the reply that did arrive.
+        received: usize,
+        /// Bytes the reply needed.
+        expected: usize,
+    },
+    /// The reply is not a reply: wrong magic or wrong count.
+    Garbage {
+        /// 1-based request number.
+        batch: u64,
+        /// What was wrong.
+        detail: String,
+    },
+    /// Writing the request failed (the program closed its stdin).
+    WriteFailed {
+        /// 1-based request number.
+        batch: u64,
+        /// The OS error.
+        reason: String,
+        /// The end of the program's stderr.
+        stderr: String,
+    },
+    /// A request the host refuses to send (empty or too large).
+    BadRequest(String),
+}
+
+impl fmt::Display for ExternalError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let tail = |s: &str| {
+            if s.trim().is_empty() {
+                String::new()
+            } else {
+                format!("; its stderr ends: {}", s.trim())
+            }
+        };
+        match self {
+            ExternalError::BadCommand(c) => write!(f, "bad --external command: {c}"),
+            ExternalError::Spawn { program, reason } => {
+                write!(f, "cannot start '{program}': {reason}")
+            }
+            ExternalError::Exited {
+                batch,
+                status,
+                received,
+                expected,
+                stderr,
+            } => write!(
+                f,
+                "the program {status} during request {batch} after {received} of {expected} reply bytes{}",
+                tail(stderr)
+            ),
+            ExternalError::Timeout {
+                batch,
+                seconds,
+                received,
+                expected,
+            } => write!(
+                f,
+                "no complete reply to request {batch} within {seconds} s ({received} of {expected} bytes); the program was killed"
+            ),
+            ExternalError::Garbage { batch, detail } => {
+                write!(f, "garbage reply to request {batch}: {detail}")
+            }
+            ExternalError::WriteFailed {
+                batch,
+                reason,
+                stderr,
+            } => write!(
+                f,
+                "cannot send request {batch}: {reason}{}",
+                tail(stderr)
+            ),
+            ExternalError::BadRequest(r) => write!(f, "bad request: {r}"),
+        }
+    }
+}
+
+impl std::error::Error for ExternalError {}
+
+/// Splits a command line into words: whitespace separates, single or double quotes group
+/// (no escapes, no variables; the program is run directly, not through a shell).
+pub fn split_command(line: &str) -> Result<Vec<String>, ExternalError> {
+    let mut words = Vec::new();
+    let mut word = String::new();
+    let mut in_word = false;
+    let mut quote: Option<char> = None;
+    for c in line.chars() {
+        match (quote, c) {
+            (Some(q), c) if c == q => quote = None,
+            (Some(_), c) => word.push(c),
+            (None, '\'' | '"') => {
+                quote = Some(c);
+                in_word = true;
+            }
+            (None, c) if c.is_whitespace() => {
+                if in_word {
+                    words.push(std::mem::take(&mut word));
+                    in_word = false;
+                }
+            }
+            (None, c) => {
+                word.push(c);
+                in_word = true;
+            }
+        }
+    }
+    if let Some(q) = quote {
+        return Err(ExternalError::BadCommand(format!(
+            "unbalanced {q} in '{line}'"
+        )));
+    }
+    if in_word {
+        words.push(word);
+    }
+    if words.is_empty() {
+        return Err(ExternalError::BadCommand("empty command".into()));
+    }
+    Ok(words)
+}
+
+/// The fixed fields of a request.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RequestHeader {
+    /// Word width (32 or 64).
+    pub width: Width,
+    /// Base 2^q.
+    pub base: PowerOfTwoBase,
+    /// Dimension.
+    pub dim: u32,
+    /// Seed.
+    pub seed: u64,
+}
+
+/// Encodes a request frame for `words`.
+pub fn encode_request(h: &RequestHeader, words: &[u64]) -> Result<Vec<u8>, ExternalError> {
+    if words.is_empty() || words.len() > MAX_BATCH {
+        return Err(ExternalError::BadRequest(format!(
+            "{} words (1..={MAX_BATCH} allowed)",
+            words.len()
+        )));
+    }
+    let wb = h.width.bits() as usize / 8;
+    let mut out = Vec::with_capacity(HEADER_BYTES + words.len() * wb);
+    out.extend_from_slice(&REQUEST_MAGIC);
+    out.extend_from_slice(&PROTOCOL_VERSION.to_le_bytes());
+    out.extend_from_slice(&(h.width.bits() as u16).to_le_bytes());
+    out.extend_from_slice(&h.base.base().to_le_bytes());
+    out.extend_from_slice(&h.dim.to_le_bytes());
+    out.extend_from_slice(&(words.len() as u32).to_le_bytes());
+    out.extend_from_slice(&0u32.to_le_bytes());
+    out.extend_from_slice(&h.seed.to_le_bytes());
+    for &w in words {
+        out.extend_from_slice(&w.to_le_bytes()[..wb]);
+    }
+    Ok(out)
+}
+
+/// Decodes a request frame (the child's side; the host uses it in tests and fuzzing):
+/// the header and the words, or a reason the bytes are not one complete frame.
+pub fn decode_request(bytes: &[u8]) -> Result<(RequestHeader, Vec<u64>), String> {
+    if bytes.len() < HEADER_BYTES {
+        return Err(format!(
+            "{} bytes, a header needs {HEADER_BYTES}",
+            bytes.len()
+        ));
+    }
+    if bytes[..4] != REQUEST_MAGIC {
+        return Err(format!("magic {:02x?} is not GOWQ", &bytes[..4]));
+    }
+    let u16_at = |o: usize| u16::from_le_bytes([bytes[o], bytes[o + 1]]);
+    let u32_at = |o: usize| u32::from_le_bytes(bytes[o..o + 4].try_into().expect("4 bytes"));
+    if u16_at(4) != PROTOCOL_VERSION {
+        return Err(format!("protocol version {}", u16_at(4)));
+    }
+    let width = match u16_at(6) {
+        32 => Width::W32,
+        64 => Width::W64,
+        w => return Err(format!("width {w} is not 32 or 64")),
+    };
+    let base = PowerOfTwoBase::from_base(u32_at(8) as u64).map_err(|e| e.to_string())?;
+    let count = u32_at(16) as usize;
+    if count == 0 || count > MAX_BATCH {
+        return Err(format!("count {count} outside 1..={MAX_BATCH}"));
+    }
+    let wb = width.bits() as usize / 8;
+    if bytes.len() != HEADER_BYTES + count * wb {
+        return Err(format!(
+            "{} bytes, the frame needs {}",
+            bytes.len(),
+            HEADER_BYTES + count * wb
+        ));
+    }
+    if u32_at(20) != 0 {
+        return Err(format!("reserved field {:#x} is not 0", u32_at(20)));
+    }
+    let seed = u64::from_le_bytes(bytes[24..32].try_into().expect("8 bytes"));
+    let words = bytes[HEADER_BYTES..]
+        .chunks_exact(wb)
+        .map(|c| {
+            let mut b = [0u8; 8];
+            b[..wb].copy_from_slice(c);
+            u64::from_le_bytes(b)
+        })
+        .collect();
+    Ok((
+        RequestHeader {
+            width,
+            base,
+            dim: u32_at(12),
+            seed,
+        },
+        words,
+    ))
+}
+
+/// Decodes a complete reply of `count` words of `width` bits for request `batch`.
+pub fn decode_reply(
+    bytes: &[u8],
+    count: usize,
+    width: Width,
+    batch: u64,
+) -> Result<Vec<u64>, ExternalError> {
+    let wb = width.bits() as usize / 8;
+    let need = 8 + count * wb;
+    if bytes.len() != need {
+        return Err(ExternalError::Garbage {
+            batch,
+            detail: format!("{} bytes, the reply needs {need}", bytes.len()),
+        });
+    }
+    if bytes[..4] != REPLY_MAGIC {
+        return Err(ExternalError::Garbage {
+            batch,
+            detail: format!(
+                "starts with {:?} ({:02x?}), not the reply magic GOWR",
+                String::from_utf8_lossy(&bytes[..4]),
+                &bytes[..4]
+            ),
+        });
+    }
+    let n = u32::from_le_bytes(bytes[4..8].try_into().expect("4 bytes")) as usize;
+    if n != count {
+        return Err(ExternalError::Garbage {
+            batch,
+            detail: format!("reply count {n}, the request had {count}"),
+        });
+    }
+    Ok(bytes[8..]
+        .chunks_exact(wb)
+        .map(|c| {
+            let mut b = [0u8; 8];
+            b[..wb].copy_from_slice(c);
+            u64::from_le_bytes(b)
+        })
+        .collect())
+}
+
+struct Session {
+    child: Child,
+    stdin: Option<ChildStdin>,
+    stdout: Receiver<Vec<u8>>,
+    pending: Vec<u8>,
+    batches: u64,
+    failure: Option<ExternalError>,
+}
+
+/// One running external program (one session of the protocol).
+pub struct ExternalProcess {
+    command: String,
+    width: Width,
+    base: PowerOfTwoBase,
+    timeout: Duration,
+    stderr: Arc<Mutex<Vec<u8>>>,
+    session: Mutex<Session>,
+}
+
+const STDERR_KEEP: usize = 4096;
+
+fn kill_group(child: &mut Child) {
+    #[cfg(unix)]
+    {
+        // The child leads its own process group; a negative pid signals the whole group, so
+        // helpers it started (e.g. a shell's children) die with it.
+        // SAFETY: kill(2) with a valid signal number has no memory-safety preconditions.
+        unsafe {
+            libc::kill(-(child.id() as i32), libc::SIGKILL);
+        }
+    }
+    let _ = child.kill();
+    let _ = child.wait();
+}
+
+impl ExternalProcess {
+    /// Starts `command` (split by [`split_command`]) for words of `width` bits in `base`;
+    /// each reply must arrive within `timeout`.
+    pub fn spawn(
+        command: &str,
+        base: PowerOfTwoBase,
+        width: Width,
+        timeout: Duration,
+    ) -> Result<ExternalProcess, ExternalError> {
+        if width != Width::W32 && width != Width::W64 {
+            return Err(ExternalError::BadRequest(format!(
+                "width {} (the protocol carries 32- or 64-bit words)",
+                width.bits()
+            )));
+        }
+        let words = split_command(command)?;
+        let mut cmd = Command::new(&words[0]);
+        cmd.args(&words[1..])
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped());
+        #[cfg(unix)]
+        std::os::unix::process::CommandExt::process_group(&mut cmd, 0);
+        let mut child = cmd.spawn().map_err(|e| ExternalError::Spawn {
+            program: words[0].clone(),
+            reason: e.to_string(),
+        })?;
+        let stdin = child.stdin.take();
+        let mut out = child.stdout.take().expect("piped stdout");
+        let mut err = child.stderr.take().expect("piped stderr");
+        // Reader threads turn blocking pipes into a channel the host can wait on with a
+        // deadline; they end at EOF, which the kill in Drop guarantees.
+        let (tx, rx) = mpsc::channel();
+        std::thread::spawn(move || {
+            let mut buf = vec![0u8; 1 << 16];
+            while let Ok(n) = out.read(&mut buf) {
+                if n == 0 || tx.send(buf[..n].to_vec()).is_err() {
+                    break;
+                }
+            }
+        });
+        let stderr = Arc::new(Mutex::new(Vec::new()));
+        let sink = Arc::clone(&stderr);
+        std::thread::spawn(move || {
+            let mut buf = [0u8; 4096];
+            while let Ok(n) = err.read(&mut buf) {
+                if n == 0 {
+                    break;
+                }
+                let mut s = sink.lock().expect("stderr buffer");
+                s.extend_from_slice(&buf[..n]);
+                let excess = s.len().saturating_sub(STDERR_KEEP);
+                s.drain(..excess);
+            }
+        });
+        Ok(ExternalProcess {
+            command: command.to_string(),
+            width,
+            base,
+            timeout,
+            stderr,
+            session: Mutex::new(Session {
+                child,
+                stdin,
+                stdout: rx,
+                pending: Vec::new(),
+                batches: 0,
+                failure: None,
+            }),
+        })
+    }
+
+    /// The command line.
+    pub fn command(&self) -> &str {
+        &self.command
+    }
+
+    /// The word width.
+    pub fn width(&self) -> Width {
+        self.width
+    }
+
+    /// The base.
+    pub fn base(&self) -> PowerOfTwoBase {
+        self.base
+    }
+
+    /// The child's process id (its process group id too).
+    pub fn pid(&self) -> u32 {
+        self.session.lock().expect("session").child.id()
+    }
+
+    /// The first failure of this session, if any.
+    pub fn failure(&self) -> Option<ExternalError> {
+        self.session.lock().expect("session").failure.clone()
+    }
+
+    /// Requests so far.
+    pub fn batches(&self) -> u64 {
+        self.session.lock().expect("session").batches
+    }
+
+    fn stderr_tail(&self) -> String {
+        // Let the stderr thread drain what a dying child wrote.
+        std::thread::sleep(Duration::from_millis(50));
+        String::from_utf8_lossy(&self.stderr.lock().expect("stderr")).into_owned()
+    }
+
+    /// Scrambles `words` (dimension `dim`, seed `seed`) in one request.
+    pub fn scramble_batch(
+        &self,
+        seed: u64,
+        dim: u32,
+        words: &[u64],
+    ) -> Result<Vec<u64>, ExternalError> {
+        let mut s = self.session.lock().expect("session");
+        if let Some(f) = &s.failure {
+            return Err(f.clone());
+        }
+        let result = self.exchange(&mut s, seed, dim, words);
+        if let Err(e) = &result {
+            if !matches!(e, ExternalError::BadRequest(_)) {
+                s.failure = Some(e.clone());
+                s.stdin = None;
+                kill_group(&mut s.child);
+            }
+        }
+        result
+    }
+
+    fn exchange(
+        &self,
+        s: &mut Session,
+        seed: u64,
+        dim: u32,
+        words: &[u64],
+    ) -> Result<Vec<u64>, ExternalError> {
+        let header = RequestHeader {
+            width: self.width,
+            base: self.base,
+            dim,
+            seed,
+        };
+        let frame = encode_request(&header, words)?;
+        s.batches += 1;
+        let batch = s.batches;
+        let write = s
+            .stdin
+            .as_mut()
+            .expect("open until failure")
+            .write_all(&frame)
+            .and_then(|_| s.stdin.as_mut().expect("open").flush());
+        let need = 8 + words.len() * self.width.bits() as usize / 8;
+        let deadline = Instant::now() + self.timeout;
+        if let Err(e) = write {
+            return Err(
+                self.exited_or(s, batch, need, |stderr| ExternalError::WriteFailed {
+                    batch,
+                    reason: e.to_string(),
+                    stderr,
+                }),
+            );
+        }
+        while s.pending.len() < need {
+            let now = Instant::now();
+            match s
+                .stdout
+                .recv_timeout(deadline.saturating_duration_since(now))
+            {
+                Ok(chunk) => {
+                    s.pending.extend_from_slice(&chunk);
+                    // A reply that starts wrong is garbage now; do not wait for more bytes.
+                    let k = s.pending.len().min(4);
+                    if s.pending[..k] != REPLY_MAGIC[..k] {
+                        return Err(ExternalError::Garbage {
+                            batch,
+                            detail: format!(
+                                "starts with {:?} ({:02x?}), not the reply magic GOWR",
+                                String::from_utf8_lossy(&s.pending[..k]),
+                                &s.pending[..k]
+                            ),
+                        });
+                    }
+                }
+                Err(RecvTimeoutError::Timeout) => {
+                    return Err(ExternalError::Timeout {
+                        batch,
+                        seconds: self.timeout.as_secs_f64(),
+                        received: s.pending.len(),
+                        expected: need,
+                    })
+                }
+                Err(RecvTimeoutError::Disconnected) => {
+                    let received = s.pending.len();
+                    return Err(
+                        self.exited_or(s, batch, need, |stderr| ExternalError::Exited {
+                            batch,
+                            status: "closed its stdout".into(),
+                            received,
+                            expected: need,
+                            stderr,
+                        }),
+                    );
+                }
+            }
+        }
+        let reply: Vec<u8> = s.pending.drain(..need).collect();
+        if !s.pending.is_empty() {
+            return Err(ExternalError::Garbage {
+                batch,
+                detail: format!("{} bytes beyond the reply", s.pending.len()),
+            });
+        }
+        decode_reply(&reply, words.len(), self.width, batch)
+    }
+
+    /// The child's exit as an error if it has exited (waiting briefly), else `otherwise`.
+    fn exited_or(
+        &self,
+        s: &mut Session,
+        batch: u64,
+        need: usize,
+        otherwise: impl FnOnce(String) -> ExternalError,
+    ) -> ExternalError {
+        let start = Instant::now();
+        while start.elapsed() < Duration::from_millis(500) {
+            if let Ok(Some(status)) = s.child.try_wait() {
+                return ExternalError::Exited {
+                    batch,
+                    status: describe_status(status),
+                    received: s.pending.len(),
+                    expected: need,
+                    stderr: self.stderr_tail(),
+                };
+            }
+            std::thread::sleep(Duration::from_millis(5));
+        }
+        otherwise(self.stderr_tail())
+    }
+}
+
+fn describe_status(status: std::process::ExitStatus) -> String {
+    #[cfg(unix)]
+    {
+        use std::os::unix::process::ExitStatusExt;
+        if let Some(sig) = status.signal() {
+            return format!("was killed by signal {sig}");
+        }
+    }
+    match status.code() {
+        Some(c) => format!("exited with status {c}"),
+        None => "exited".into(),
+    }
+}
+
+impl Drop for ExternalProcess {
+    fn drop(&mut self) {
+        let s = self.session.get_mut().expect("session");
+        // Closing stdin asks a well-behaved child to exit; give it a moment, then kill the group.
+        s.stdin = None;
+        let start = Instant::now();
+        while start.elapsed() < Duration::from_millis(200) {
+            if let Ok(Some(_)) = s.child.try_wait() {
+                break;
+            }
+            std::thread::sleep(Duration::from_millis(2));
+        }
+        kill_group(&mut s.child);
+    }
+}
+
+/// One seed's view of an [`ExternalProcess`] as a [`Scrambler`]. Calls after a failure return 0;
+/// the verify battery reads [`ExternalProcess::failure`] after each check.
+pub struct ExternalScrambler {
+    process: Arc<ExternalProcess>,
+    seed: u64,
+    claims_uniform: bool,
+}
+
+impl ExternalScrambler {
+    /// The scrambler with `seed` on `process`; `claims_uniform` is what the user says it is.
+    pub fn new(process: Arc<ExternalProcess>, seed: u64, claims_uniform: bool) -> Self {
+        ExternalScrambler {
+            process,
+            seed,
+            claims_uniform,
+        }
+    }
+
+    /// Scrambles a batch in one request.
+    pub fn scramble_batch(&self, words: &[u64], dim: u32) -> Result<Vec<u64>, ExternalError> {
+        self.process.scramble_batch(self.seed, dim, words)
+    }
+}
+
+impl Scrambler for ExternalScrambler {
+    fn name(&self) -> String {
+        format!("external:{}", self.process.command)
+    }
+    fn base(&self) -> PowerOfTwoBase {
+        self.process.base
+    }
+    fn claims_nested_uniform(&self) -> bool {
+        self.claims_uniform
+    }
+    fn supports_width(&self, width: Width) -> bool {
+        width == self.process.width
+    }
+    fn scramble(&self, x: u64, _width: Width, dim: u32) -> u64 {
+        self.scramble_batch(&[x], dim)
+            .map(|v| v[0])
+            .unwrap_or_default()
+    }
+    /// The protocol has no inverse; verify checks injectivity instead. This search inverts a
+    /// nested scramble digit by digit (b requests per digit) and is only right for nested ones.
+    fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
+        let layout = crate::core::DigitLayout::new(width, self.process.base);
+        let mut x = 0u64;
+        for k in 0..layout.num_digits() {
+            let want = layout.get(y, k);
+            for d in 0..(1u32 << layout.digit_bits(k)) {
+                let c = layout.set(x, k, d);
+                if layout.get(self.scramble(c, width, dim), k) == want {
+                    x = c;
+                    break;
+                }
+            }
+        }
+        x
+    }
+}

@@ -1,0 +1,298 @@
+//! External implementations through the stdin/stdout protocol: the C examples under
+//! `examples/external/` (a correct twin of `owen-per-bit-hash` and a broken non-nested hash)
+//! and misbehaving children (crash, hang, short and garbage replies). Needs a C compiler `cc`,
+//! which the Rust toolchain already requires for linking.
+
+use gartowen::core::{PowerOfTwoBase, Width};
+use gartowen::external::{ExternalError, ExternalProcess};
+use gartowen::verify::{check_candidate, external_candidate, Level, Verdict};
+use std::path::PathBuf;
+use std::process::Command;
+use std::sync::{Arc, OnceLock};
+use std::time::Duration;
+
+/// Compiles the examples once per test binary.
+fn examples() -> &'static (PathBuf, PathBuf) {
+    static BUILT: OnceLock<(PathBuf, PathBuf)> = OnceLock::new();
+    BUILT.get_or_init(|| {
+        let dir = std::env::temp_dir().join(format!("gartowen-external-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let src = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("examples/external");
+        let build = |name: &str| {
+            let out = dir.join(name);
+            let status = Command::new("cc")
+                .args(["-O2", "-Wall", "-Werror", "-o"])
+                .arg(&out)
+                .arg(src.join(format!("{name}.c")))
+                .status()
+                .expect("a C compiler `cc` (the Rust toolchain needs one to link)");
+            assert!(status.success(), "compiling {name}.c failed");
+            out
+        };
+        (build("owen_per_bit"), build("broken_hash"))
+    })
+}
+
+fn spawn(command: &str, width: Width, timeout_ms: u64) -> ExternalProcess {
+    ExternalProcess::spawn(
+        command,
+        PowerOfTwoBase::B2,
+        width,
+        Duration::from_millis(timeout_ms),
+    )
+    .unwrap()
+}
+
+#[test]
+fn correct_example_passes_bit_exact_against_its_builtin_twin() {
+    let registry = gartowen::registry();
+    for width in [Width::W32, Width::W64] {
+        let p = spawn(examples().0.to_str().unwrap(), width, 10_000);
+        let c = external_candidate(Arc::new(p), 7, true, Some((&registry, "owen-per-bit-hash")));
+        let r = check_candidate(&c, Level::Quick, 1);
+        let names: Vec<&str> = r.checks.iter().map(|c| c.check.as_str()).collect();
+        assert_eq!(names, ["injective", "nested", "nets", "node-law", "expect"]);
+        for check in &r.checks {
+            assert_eq!(check.verdict, Verdict::Pass, "{width:?} {check:?}");
+        }
+        assert!(r.checks[4].detail.contains("bit-exact"));
+    }
+}
+
+#[test]
+fn expect_catches_a_twin_that_differs() {
+    // The correct program is not lk-hash: the expect check must name the first differing word.
+    let registry = gartowen::registry();
+    let p = spawn(examples().0.to_str().unwrap(), Width::W32, 10_000);
+    let c = external_candidate(Arc::new(p), 0, true, Some((&registry, "lk-hash")));
+    let r = check_candidate(&c, Level::Quick, 1);
+    let expect = &r.checks[4];
+    assert_eq!(expect.verdict, Verdict::Fail);
+    assert!(
+        expect.detail.contains("seed 0, dim 0, word 0x0"),
+        "{}",
+        expect.detail
+    );
+}
+
+#[test]
+fn broken_example_is_rejected_naming_the_failing_node() {
+    let p = spawn(examples().1.to_str().unwrap(), Width::W32, 10_000);
+    let c = external_candidate(Arc::new(p), 0, true, None);
+    let r = check_candidate(&c, Level::Quick, 1);
+    assert!(r.failed());
+    // A bijection of words, so injectivity holds; nestedness does not.
+    assert_eq!(r.checks[0].verdict, Verdict::Pass);
+    let nested = &r.checks[1];
+    assert_eq!(nested.verdict, Verdict::Fail);
+    assert!(
+        nested.detail.starts_with("NotNested at depth") && nested.detail.contains("prefix"),
+        "{}",
+        nested.detail
+    );
+    assert_eq!(r.checks[2].verdict, Verdict::Fail, "{}", r.checks[2].detail);
+}
+
+fn first_failure(command: &str, timeout_ms: u64) -> (ExternalError, u32) {
+    let p = spawn(command, Width::W32, timeout_ms);
+    let pid = p.pid();
+    let e = p.scramble_batch(0, 0, &[1, 2, 3]).unwrap_err();
+    assert_eq!(p.failure(), Some(e.clone()), "the session is poisoned");
+    assert_eq!(
+        p.scramble_batch(0, 0, &[1]).unwrap_err(),
+        e,
+        "no second exchange"
+    );
+    (e, pid)
+}
+
+#[test]
+fn a_program_that_cannot_start_is_named() {
+    let e = ExternalProcess::spawn(
+        "/nonexistent/scrambler --fast",
+        PowerOfTwoBase::B2,
+        Width::W32,
+        Duration::from_secs(1),
+    )
+    .err()
+    .unwrap();
+    assert!(
+        matches!(&e, ExternalError::Spawn { program, .. } if program == "/nonexistent/scrambler")
+    );
+    assert!(e
+        .to_string()
+        .contains("cannot start '/nonexistent/scrambler'"));
+}
+
+#[test]
+fn an_exiting_program_reports_its_status_and_stderr() {
+    let (e, _) = first_failure("sh -c 'echo unsupported base >&2; exit 3'", 5000);
+    let text = e.to_string();
+    assert!(text.contains("exited with status 3"), "{text}");
+    assert!(text.contains("unsupported base"), "{text}");
+}
+
+#[test]
+fn a_crash_is_reported_with_its_signal() {
+    let (e, _) = first_failure("sh -c 'head -c 32 >/dev/null; kill -SEGV $$'", 5000);
+    assert!(e.to_string().contains("killed by signal 11"), "{e}");
+}
+
+#[test]
+fn a_short_reply_is_reported_with_the_byte_counts() {
+    // Magic, count 3, then 6 of the 12 word bytes, then exit.
+    let (e, _) = first_failure(
+        r"sh -c 'head -c 44 >/dev/null; printf GOWR; printf \\003\\000\\000\\000\\001\\002\\003\\004\\005\\006'",
+        5000,
+    );
+    match &e {
+        ExternalError::Exited {
+            received, expected, ..
+        } => assert_eq!((*received, *expected), (14, 20), "{e}"),
+        other => panic!("expected an exit mid-reply, got {other}"),
+    }
+}
+
+#[test]
+fn garbage_replies_are_named() {
+    let (e, _) = first_failure("sh -c 'head -c 44 >/dev/null; echo hello; sleep 5'", 5000);
+    assert!(
+        matches!(&e, ExternalError::Garbage { detail, .. } if detail.contains("\"hell\"")),
+        "{e}"
+    );
+    // Right magic, wrong count.
+    let (e, _) = first_failure(
+        r"sh -c 'head -c 44 >/dev/null; printf GOWR\\002\\000\\000\\000; head -c 12 /dev/zero; sleep 5'",
+        5000,
+    );
+    assert!(
+        e.to_string().contains("reply count 2, the request had 3"),
+        "{e}"
+    );
+}
+
+fn running(marker: &str) -> bool {
+    std::fs::read_dir("/proc").unwrap().flatten().any(|d| {
+        std::fs::read(d.path().join("cmdline"))
+            .map(|c| {
+                String::from_utf8_lossy(&c)
+                    .replace('\0', " ")
+                    .contains(marker)
+            })
+            .unwrap_or(false)
+    })
+}
+
+#[test]
+fn a_hanging_program_times_out_and_nothing_is_left_running() {
+    // The shell forks `sleep` as a grandchild: killing only the shell would leave it behind.
+    let marker = "31.4159";
+    let (e, pid) = first_failure(&format!("sh -c 'sleep {marker}; true'"), 300);
+    assert!(
+        matches!(
+            e,
+            ExternalError::Timeout {
+                batch: 1,
+                received: 0,
+                ..
+            }
+        ),
+        "{e}"
+    );
+    assert!(e.to_string().contains("was killed"));
+    std::thread::sleep(Duration::from_millis(100));
+    assert!(!running(marker), "the grandchild sleep survived");
+    assert!(!std::path::Path::new(&format!("/proc/{pid}")).exists());
+}
+
+#[test]
+fn a_failing_program_fails_every_check_with_the_reason() {
+    let p = spawn("sh -c 'exec sleep 30'", Width::W32, 200);
+    let c = external_candidate(Arc::new(p), 0, true, None);
+    let r = check_candidate(&c, Level::Quick, 1);
+    for check in &r.checks {
+        assert_eq!(check.verdict, Verdict::Fail);
+        assert!(
+            check
+                .detail
+                .starts_with("external program failed: no complete reply to request 1"),
+            "{}",
+            check.detail
+        );
+    }
+}
+
+#[test]
+fn a_well_behaved_program_exits_when_the_session_ends() {
+    let p = spawn(examples().0.to_str().unwrap(), Width::W32, 10_000);
+    let pid = p.pid();
+    assert_eq!(p.scramble_batch(0, 0, &[0]).unwrap().len(), 1);
+    drop(p);
+    assert!(!std::path::Path::new(&format!("/proc/{pid}")).exists());
+}
+
+mod protocol_fuzz {
+    use gartowen::core::{PowerOfTwoBase, Width};
+    use gartowen::external::{decode_reply, decode_request, encode_request, RequestHeader};
+    use proptest::prelude::*;
+
+    fn header(width64: bool, q: u32, dim: u32, seed: u64) -> RequestHeader {
+        RequestHeader {
+            width: if width64 { Width::W64 } else { Width::W32 },
+            base: PowerOfTwoBase::from_q(q).unwrap(),
+            dim,
+            seed,
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 2000, ..ProptestConfig::default() })]
+
+        /// Decoders return a value or an error for any bytes; they never panic.
+        #[test]
+        fn decoders_never_panic(bytes in proptest::collection::vec(any::<u8>(), 0..128),
+                                count in 0usize..20, width64 in any::<bool>()) {
+            let _ = decode_request(&bytes);
+            let w = if width64 { Width::W64 } else { Width::W32 };
+            if let Ok(words) = decode_reply(&bytes, count, w, 1) {
+                prop_assert_eq!(words.len(), count);
+                prop_assert_eq!(&bytes[..4], b"GOWR");
+            }
+        }
+
+        /// Encoding then decoding a request is the identity (words truncated to the width).
+        #[test]
+        fn requests_round_trip(width64 in any::<bool>(), q in 1u32..=8, dim in any::<u32>(),
+                               seed in any::<u64>(),
+                               words in proptest::collection::vec(any::<u64>(), 1..40)) {
+            let h = header(width64, q, dim, seed);
+            let words: Vec<u64> = words.iter().map(|w| w & h.width.mask()).collect();
+            let (back, decoded) = decode_request(&encode_request(&h, &words).unwrap()).unwrap();
+            prop_assert_eq!(back, h);
+            prop_assert_eq!(decoded, words);
+        }
+
+        /// A corrupted header byte either is rejected or decodes to a frame that differs
+        /// exactly in the corrupted field: the base (to another power of two), the dimension
+        /// or the seed. (Fuzzing found the reserved field unchecked; it is now rejected.)
+        #[test]
+        fn corrupted_headers_are_caught(at in 0usize..32, flip in 1u8..=255,
+                                        words in proptest::collection::vec(any::<u32>(), 1..8)) {
+            let h = header(false, 1, 3, 99);
+            let words: Vec<u64> = words.into_iter().map(u64::from).collect();
+            let mut frame = encode_request(&h, &words).unwrap();
+            frame[at] ^= flip;
+            match decode_request(&frame) {
+                Err(_) => {}
+                Ok((h2, w2)) => {
+                    prop_assert!((8..16).contains(&at) || (24..32).contains(&at), "byte {} accepted", at);
+                    prop_assert_eq!(w2, words);
+                    prop_assert_eq!(h2.width, h.width);
+                    prop_assert_eq!(h2.base == h.base, !(8..12).contains(&at));
+                    prop_assert_eq!(h2.dim == h.dim, !(12..16).contains(&at));
+                    prop_assert_eq!(h2.seed == h.seed, !(24..32).contains(&at));
+                }
+            }
+        }
+    }
+}
