@@ -29,6 +29,7 @@ enum Command {
     Verify(commands::verify::VerifyArgs),
     Matrices(commands::matrices::MatricesArgs),
     List(commands::list::ListArgs),
+    Report(commands::report::ReportArgs),
 }
 
 fn main() -> ExitCode {
@@ -41,6 +42,7 @@ fn main() -> ExitCode {
         Command::Verify(a) => commands::verify::run(a),
         Command::Matrices(a) => commands::matrices::run(a),
         Command::List(a) => commands::list::run(a),
+        Command::Report(a) => commands::report::run(a),
     };
     match result {
         Ok(code) => code,

@@ -61,6 +61,12 @@ impl SplitMix64 {
         mix64(self.state)
     }
 
+    /// A uniform double in [0, 1): the top 53 bits of the next output times 2^-53.
+    #[inline(always)]
+    pub fn next_f64(&mut self) -> f64 {
+        (self.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+    }
+
     /// The next 32-bit output (high half of a 64-bit output).
     #[inline(always)]
     pub fn next_u32(&mut self) -> u32 {

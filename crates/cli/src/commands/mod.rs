@@ -6,6 +6,7 @@ pub mod generate;
 pub mod inspect;
 pub mod list;
 pub mod matrices;
+pub mod report;
 pub mod verify;
 
 use crate::CliError;

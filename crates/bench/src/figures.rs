@@ -1,0 +1,269 @@
+//! PNG figures with plotters. Text uses DejaVu Sans embedded through the `dejavu` crate and
+//! rasterized by ab_glyph, so figures build on a machine without system font libraries.
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use std::path::Path;
+use std::sync::Once;
+
+/// A figure that could not be drawn or written.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct FigureError(pub String);
+
+impl std::fmt::Display for FigureError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "figure: {}", self.0)
+    }
+}
+
+impl std::error::Error for FigureError {}
+
+fn fail(e: impl std::fmt::Display) -> FigureError {
+    FigureError(e.to_string())
+}
+
+const FONT: &str = "sans-serif";
+
+fn register_fonts() {
+    static ONCE: Once = Once::new();
+    ONCE.call_once(|| {
+        // The font is static data of the dejavu crate; registration fails only on bad bytes.
+        let _ = plotters::style::register_font(FONT, FontStyle::Normal, dejavu::sans::regular());
+    });
+}
+
+/// A labelled line or point series in data coordinates.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    /// Legend label.
+    pub label: String,
+    /// (x, y) points.
+    pub points: Vec<(f64, f64)>,
+}
+
+fn log_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
+    let (lo, hi) = values
+        .filter(|v| *v > 0.0 && v.is_finite())
+        .fold((f64::MAX, f64::MIN), |(a, b), v| (a.min(v), b.max(v)));
+    if lo > hi {
+        return (0.1, 10.0);
+    }
+    (lo / 1.5, hi * 1.5)
+}
+
+fn color(i: usize) -> RGBColor {
+    let c = Palette99::pick(i).to_rgba();
+    RGBColor(c.0, c.1, c.2)
+}
+
+/// Log-log lines with reference slopes drawn through the first point of the first series.
+pub fn loglog_lines(
+    path: &Path,
+    title: &str,
+    x_desc: &str,
+    y_desc: &str,
+    series: &[Series],
+    reference_slopes: &[f64],
+) -> Result<(), FigureError> {
+    register_fonts();
+    let root = BitMapBackend::new(path, (900, 620)).into_drawing_area();
+    root.fill(&WHITE).map_err(fail)?;
+    let all = || series.iter().flat_map(|s| s.points.iter());
+    let (x0, x1) = log_range(all().map(|p| p.0));
+    let (y0, y1) = log_range(all().map(|p| p.1));
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, (FONT, 22))
+        .margin(12)
+        .x_label_area_size(40)
+        .y_label_area_size(70)
+        .right_y_label_area_size(10)
+        .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
+        .map_err(fail)?;
+    chart
+        .configure_mesh()
+        .x_desc(x_desc)
+        .y_desc(y_desc)
+        .label_style((FONT, 13))
+        .axis_desc_style((FONT, 15))
+        .draw()
+        .map_err(fail)?;
+    if let Some(&(ax, ay)) = series.first().and_then(|s| s.points.first()) {
+        for (k, &slope) in reference_slopes.iter().enumerate() {
+            let grey = RGBColor(150, 150, 150);
+            let style = ShapeStyle::from(&grey).stroke_width(1 + k as u32);
+            let line = [ax, x1].map(|x| (x, ay * 2.0 * (x / ax).powf(slope)));
+            chart
+                .draw_series(LineSeries::new(line, style))
+                .map_err(fail)?
+                .label(format!("slope {slope}"))
+                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
+        }
+    }
+    for (i, s) in series.iter().enumerate() {
+        let c = color(i);
+        let pts: Vec<(f64, f64)> = s.points.iter().copied().filter(|p| p.1 > 0.0).collect();
+        chart
+            .draw_series(LineSeries::new(pts.clone(), c.stroke_width(2)))
+            .map_err(fail)?
+            .label(s.label.clone())
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(2)));
+        chart
+            .draw_series(pts.into_iter().map(|p| Circle::new(p, 3, c.filled())))
+            .map_err(fail)?;
+    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::LowerLeft)
+        .label_font((FONT, 12))
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .draw()
+        .map_err(fail)?;
+    root.present().map_err(fail)
+}
+
+/// Log-log labelled points (one per series, its first point): the speed-against-error picture.
+pub fn loglog_points(
+    path: &Path,
+    title: &str,
+    x_desc: &str,
+    y_desc: &str,
+    points: &[Series],
+) -> Result<(), FigureError> {
+    register_fonts();
+    let root = BitMapBackend::new(path, (900, 620)).into_drawing_area();
+    root.fill(&WHITE).map_err(fail)?;
+    let all = || points.iter().flat_map(|s| s.points.iter());
+    let (x0, x1) = log_range(all().map(|p| p.0));
+    let (y0, y1) = log_range(all().map(|p| p.1));
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, (FONT, 22))
+        .margin(12)
+        .x_label_area_size(40)
+        .y_label_area_size(70)
+        .build_cartesian_2d((x0..x1 * 3.0).log_scale(), (y0..y1).log_scale())
+        .map_err(fail)?;
+    chart
+        .configure_mesh()
+        .x_desc(x_desc)
+        .y_desc(y_desc)
+        .label_style((FONT, 13))
+        .axis_desc_style((FONT, 15))
+        .draw()
+        .map_err(fail)?;
+    for (i, s) in points.iter().enumerate() {
+        let c = color(i);
+        let label = s.label.clone();
+        chart
+            .draw_series(s.points.iter().take(1).map(|&p| {
+                EmptyElement::at(p)
+                    + Circle::new((0, 0), 4, c.filled())
+                    + Text::new(label.clone(), (6, -6), (FONT, 11).into_font())
+            }))
+            .map_err(fail)?;
+    }
+    root.present().map_err(fail)
+}
+
+/// One panel of a point-set grid.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Panel {
+    /// Points in the unit square.
+    Scatter(Vec<[f64; 2]>),
+    /// A power spectrum on the (2F+1)² grid (see [`crate::spectrum::power_spectrum`]).
+    Spectrum {
+        /// Row-major values.
+        values: Vec<f64>,
+        /// F.
+        max_freq: usize,
+    },
+}
+
+fn draw_panel(
+    area: &DrawingArea<BitMapBackend, Shift>,
+    caption: &str,
+    panel: &Panel,
+) -> Result<(), FigureError> {
+    match panel {
+        Panel::Scatter(pts) => {
+            let mut chart = ChartBuilder::on(area)
+                .caption(caption, (FONT, 12))
+                .margin(4)
+                .build_cartesian_2d(0f64..1f64, 0f64..1f64)
+                .map_err(fail)?;
+            chart
+                .plotting_area()
+                .draw(&Rectangle::new([(0.0, 0.0), (1.0, 1.0)], BLACK))
+                .map_err(fail)?;
+            chart
+                .draw_series(
+                    pts.iter()
+                        .map(|p| Circle::new((p[0], p[1]), 1, BLACK.filled())),
+                )
+                .map_err(fail)?;
+        }
+        Panel::Spectrum { values, max_freq } => {
+            let f = *max_freq as i64;
+            let side = (2 * f + 1) as usize;
+            let mut chart = ChartBuilder::on(area)
+                .caption(caption, (FONT, 12))
+                .margin(4)
+                .build_cartesian_2d(-f..f + 1, -f..f + 1)
+                .map_err(fail)?;
+            // Grey levels on a log scale: black = 0.01 or less, white = 4 or more; the DC term is
+            // drawn white.
+            let shade = |v: f64| {
+                let t = ((v.max(1e-2).ln() - 1e-2f64.ln()) / (4f64.ln() - 1e-2f64.ln()))
+                    .clamp(0.0, 1.0);
+                let g = (t * 255.0) as u8;
+                RGBColor(g, g, g)
+            };
+            chart
+                .draw_series((0..side * side).map(|k| {
+                    let (r, c) = ((k / side) as i64 - f, (k % side) as i64 - f);
+                    let v = if r == 0 && c == 0 { 1e9 } else { values[k] };
+                    Rectangle::new([(c, r), (c + 1, r + 1)], shade(v).filled())
+                }))
+                .map_err(fail)?;
+        }
+    }
+    Ok(())
+}
+
+/// A grid of panels: one row per entry (its label drawn at the left), panels left to right.
+pub fn panel_grid(
+    path: &Path,
+    title: &str,
+    column_labels: &[String],
+    rows: &[(String, Vec<Panel>)],
+) -> Result<(), FigureError> {
+    register_fonts();
+    let cols = rows.iter().map(|r| r.1.len()).max().unwrap_or(1);
+    let cell = 150u32;
+    let (left, top) = (150u32, 40u32);
+    let size = (left + cell * cols as u32, top + cell * rows.len() as u32);
+    let root = BitMapBackend::new(path, size).into_drawing_area();
+    root.fill(&WHITE).map_err(fail)?;
+    root.draw(&Text::new(
+        title.to_string(),
+        (10, 8),
+        (FONT, 18).into_font(),
+    ))
+    .map_err(fail)?;
+    for (r, (label, panels)) in rows.iter().enumerate() {
+        let y = (top + cell * r as u32) as i32;
+        root.draw(&Text::new(
+            label.clone(),
+            (6, y + cell as i32 / 2 - 8),
+            (FONT, 12).into_font(),
+        ))
+        .map_err(fail)?;
+        for (c, panel) in panels.iter().enumerate() {
+            let x = (left + cell * c as u32) as i32;
+            let area = root.clone().shrink((x, y), (cell, cell));
+            let caption = column_labels.get(c).cloned().unwrap_or_default();
+            draw_panel(&area, &caption, panel)?;
+        }
+    }
+    root.present().map_err(fail)
+}

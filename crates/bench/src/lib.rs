@@ -1,0 +1,8 @@
+//! Speed against error: integrands with exact integrals, the RMSE harness over every sequence
+//! and scrambler, point-set spectra, and the `gartowen report` figures and tables.
+
+pub mod figures;
+pub mod harness;
+pub mod integrands;
+pub mod report;
+pub mod spectrum;

@@ -1,0 +1,857 @@
+//! `gartowen report`: runs the RMSE harness, the speed measurement, the randomization-quality
+//! battery and the discrepancy curves, and writes report.json, report.md and the PNG figures.
+//!
+//! Every error figure is deterministic (fixed seeds, replicate-ordered reduction). Speeds are
+//! stored both as ns per coordinate and as a ratio to the `lk-hash` peer measured in the same
+//! run; baselines compare only the ratios.
+
+use crate::figures::{loglog_lines, loglog_points, panel_grid, FigureError, Panel, Series};
+use crate::harness::{methods_for, run_method, HarnessConfig, HarnessError, Method, MethodResult};
+use crate::integrands::{standard_families, Family, Smoothness};
+use crate::spectrum::power_spectrum;
+use gartowen::core::{BuildContext, Registry, SplitMix64, Width};
+use gartowen::discrepancy::{curves, Kind};
+use gartowen::seq::SequenceKind;
+use gartowen::verify::{verify, Level, Verdict};
+use serde::{Deserialize, Serialize};
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// The report's JSON schema name and version.
+pub const REPORT_SCHEMA: &str = "gartowen-report";
+/// Version of [`REPORT_SCHEMA`].
+pub const REPORT_VERSION: u32 = 1;
+
+/// The speed of one scrambler.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SpeedRow {
+    /// Registry request.
+    pub scrambler: String,
+    /// Base.
+    pub base: u32,
+    /// Nanoseconds per 32-bit coordinate (this machine, this run).
+    pub ns_per_coord: f64,
+    /// ns_per_coord divided by that of `lk-hash` in the same run.
+    pub ratio_to_lk_hash: f64,
+    /// Bytes of tables the scrambler holds.
+    pub table_bytes: usize,
+}
+
+/// Randomization quality of one scrambler against uniform nested scrambling.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct QualityRow {
+    /// Registry name.
+    pub scrambler: String,
+    /// Base.
+    pub base: u32,
+    /// Whether it claims nested uniformity.
+    pub claims_nested_uniform: bool,
+    /// Nestedness verdict from the inspector.
+    pub nested: Verdict,
+    /// Node-law verdict (measured only for non-claimants).
+    pub node_law: Verdict,
+    /// χ² of the node law, and its detail (dof, total variation, affine fraction).
+    pub chi_square: Option<f64>,
+    /// The node-law detail in words.
+    pub detail: String,
+}
+
+/// One slope against its expectation.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SlopeRow {
+    /// Method label.
+    pub method: String,
+    /// Integrand.
+    pub integrand: String,
+    /// Measured slope.
+    pub slope: f64,
+    /// The rate theory predicts for Owen-scrambled nets (−1.5 smooth, −0.75 discontinuous 2-D).
+    pub expected: f64,
+    /// slope ≤ expected + tolerance.
+    pub meets: bool,
+}
+
+/// Figure 2 data: mean L2-star D² of sz16 against N, jointly in 16-D and for pairs (0, j).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct DiscrepancyCurve {
+    /// Scrambler request.
+    pub scrambler: String,
+    /// Sizes.
+    pub n: Vec<usize>,
+    /// Mean joint D².
+    pub joint: Vec<f64>,
+    /// Pairs.
+    pub pairs: Vec<[usize; 2]>,
+    /// Mean 2-D D² per size, per pair.
+    pub pair_values: Vec<Vec<f64>>,
+}
+
+/// Noise thresholds the baseline comparison uses (stated in the report).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Thresholds {
+    /// A slope regresses when it rises by more than this.
+    pub slope: f64,
+    /// An RMSE at the largest N regresses when it grows by more than this factor:
+    /// 1 + 3/√(2R), three standard errors of an RMSE estimated from R replicates.
+    pub rmse_factor: f64,
+    /// A speed ratio regresses when it grows by more than this factor.
+    pub speed_factor: f64,
+}
+
+/// Everything the report shows.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Report {
+    /// [`REPORT_SCHEMA`].
+    pub schema: String,
+    /// [`REPORT_VERSION`].
+    pub schema_version: u32,
+    /// Tool version.
+    pub tool_version: String,
+    /// Quick mode.
+    pub quick: bool,
+    /// Harness settings.
+    pub harness: HarnessConfig,
+    /// Integrand names in curve order.
+    pub integrands: Vec<String>,
+    /// RMSE curves per method.
+    pub methods: Vec<MethodResult>,
+    /// Slopes of every scrambled method on the 2-D integrands, against the expected rates.
+    pub slopes: Vec<SlopeRow>,
+    /// Speeds.
+    pub speed: Vec<SpeedRow>,
+    /// Randomization quality.
+    pub quality: Vec<QualityRow>,
+    /// Figure 2 data.
+    pub discrepancy: Vec<DiscrepancyCurve>,
+    /// Baseline thresholds.
+    pub thresholds: Thresholds,
+    /// Worker threads used.
+    pub threads: usize,
+    /// Wall seconds for the whole report.
+    pub seconds: f64,
+}
+
+/// Why a report could not be made.
+#[derive(Debug)]
+pub enum ReportError {
+    /// The harness refused a method or setting.
+    Harness(HarnessError),
+    /// A figure failed.
+    Figure(FigureError),
+    /// Writing an output failed.
+    Io(String),
+    /// The baseline is not a report this build reads.
+    Baseline(String),
+}
+
+impl std::fmt::Display for ReportError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ReportError::Harness(e) => write!(f, "harness: {e}"),
+            ReportError::Figure(e) => write!(f, "{e}"),
+            ReportError::Io(e) => write!(f, "{e}"),
+            ReportError::Baseline(e) => write!(f, "baseline: {e}"),
+        }
+    }
+}
+
+impl std::error::Error for ReportError {}
+
+/// Report settings.
+#[derive(Debug, Clone)]
+pub struct ReportConfig {
+    /// Quick mode: smaller N, fewer replicates and methods (under a minute on 2 cores).
+    pub quick: bool,
+    /// Master seed.
+    pub seed: u64,
+}
+
+/// Nanoseconds per coordinate of `request`, timed over `reps` passes of 4096 words.
+fn ns_per_coord(
+    registry: &Registry,
+    request: &str,
+    base_default: u32,
+    reps: u32,
+) -> (f64, u32, usize) {
+    let s = registry
+        .build_with(
+            request,
+            &BuildContext {
+                seed: 1,
+                default_base: gartowen::core::PowerOfTwoBase::from_base(base_default as u64)
+                    .expect("registry base"),
+            },
+        )
+        .expect("registry entry");
+    let mut rng = SplitMix64::new(9);
+    let words: Vec<u64> = (0..4096).map(|_| rng.next_u32() as u64).collect();
+    let mut sink = 0u64;
+    let t = Instant::now();
+    for r in 0..reps {
+        for (i, &w) in words.iter().enumerate() {
+            sink ^= s.scramble(w, Width::W32, (i as u32 + r) & 7);
+        }
+    }
+    std::hint::black_box(sink);
+    let ns = t.elapsed().as_secs_f64() * 1e9 / (reps as f64 * words.len() as f64);
+    (ns, s.base().base(), s.table_bytes())
+}
+
+/// Speeds of every registry entry (oracles in base 16), with lk-hash as the reference.
+pub fn measure_speed(registry: &Registry, quick: bool) -> Vec<SpeedRow> {
+    let reps = if quick { 8 } else { 64 };
+    let mut rows: Vec<SpeedRow> = registry
+        .specs()
+        .iter()
+        .map(|spec| {
+            let request = if spec.name == "owen-oracle" {
+                "owen-oracle:base=16".to_string()
+            } else {
+                spec.name.to_string()
+            };
+            // The oracle is ~100× slower than the rest; fewer passes keep the run short.
+            let r = if spec.name == "owen-oracle" {
+                reps / 8 + 1
+            } else {
+                reps
+            };
+            let (ns, base, table_bytes) =
+                ns_per_coord(registry, &request, spec.default_base.base(), r);
+            SpeedRow {
+                scrambler: request,
+                base,
+                ns_per_coord: ns,
+                ratio_to_lk_hash: 0.0,
+                table_bytes,
+            }
+        })
+        .collect();
+    let lk = rows
+        .iter()
+        .find(|r| r.scrambler == "lk-hash")
+        .map_or(1.0, |r| r.ns_per_coord);
+    for r in &mut rows {
+        r.ratio_to_lk_hash = r.ns_per_coord / lk;
+    }
+    rows
+}
+
+/// The randomization-quality table from the verify battery at quick level, one row per
+/// request (the same requests as the speed table).
+pub fn measure_quality(registry: &Registry, requests: &[String]) -> Vec<QualityRow> {
+    verify(registry, requests, Level::Quick)
+        .expect("registry entries build")
+        .into_iter()
+        .zip(requests)
+        .map(|(r, request)| {
+            let law = r.checks.iter().find(|c| c.check == "node-law");
+            let nested = r.checks.iter().find(|c| c.check == "nested");
+            QualityRow {
+                scrambler: request.clone(),
+                base: r.base,
+                claims_nested_uniform: r.claims_nested_uniform,
+                nested: nested.map_or(Verdict::Skipped, |c| c.verdict),
+                node_law: law.map_or(Verdict::Skipped, |c| c.verdict),
+                chi_square: law.and_then(|c| c.value),
+                detail: law.map_or(String::new(), |c| c.detail.clone()),
+            }
+        })
+        .collect()
+}
+
+/// Row-major words of the first `dims` dimensions of sz16, scrambled by `request` with `seed`.
+fn sz16_words(registry: &Registry, request: &str, dims: usize, n: usize, seed: u64) -> Vec<u64> {
+    let seq = SequenceKind::Sz16.build(dims, Width::W32).expect("sz16");
+    let s = registry
+        .build_with(
+            request,
+            &BuildContext {
+                seed,
+                default_base: SequenceKind::Sz16.base(),
+            },
+        )
+        .expect("registry entry");
+    (0..n as u64)
+        .flat_map(|i| (0..dims).map(move |j| (i, j)))
+        .map(|(i, j)| s.scramble(seq.point(i, j), Width::W32, j as u32))
+        .collect()
+}
+
+/// Figure 2 data for binary against base-16 scrambling of sz16.
+pub fn discrepancy_curves(registry: &Registry, quick: bool) -> Vec<DiscrepancyCurve> {
+    let max_log2 = if quick { 9 } else { 12 };
+    let sizes: Vec<usize> = (4..=max_log2).map(|k| 1usize << k).collect();
+    let seeds: Vec<u64> = (0..if quick { 4 } else { 8 }).collect();
+    let pairs = curves::pair_list(16, false);
+    [
+        "art-owen-2",
+        "art-owen-16p",
+        "owen-oracle:base=2",
+        "owen-oracle:base=16",
+    ]
+    .iter()
+    .filter(|r| !quick || !r.starts_with("owen-oracle"))
+    .map(|request| {
+        let c = curves::curve(
+            Kind::L2Star,
+            16,
+            Width::W32,
+            &sizes,
+            &seeds,
+            &pairs,
+            &|seed, n| sz16_words(registry, request, 16, n, seed),
+        );
+        DiscrepancyCurve {
+            scrambler: request.to_string(),
+            n: c.points.iter().map(|p| p.n).collect(),
+            joint: c.points.iter().map(|p| p.joint).collect(),
+            pairs: c.pairs.clone(),
+            pair_values: c.points.iter().map(|p| p.pairs.clone()).collect(),
+        }
+    })
+    .collect()
+}
+
+fn expected_slope(s: Smoothness) -> Option<f64> {
+    match s {
+        Smoothness::Smooth => Some(-1.5),
+        Smoothness::Discontinuous => Some(-0.75),
+        Smoothness::Kinked => None,
+    }
+}
+
+/// Slopes of every scrambled method on the 2-D integrands with a predicted rate. A slope
+/// "meets" the prediction when it is at most 0.25 above it (the fit's noise at these R and N).
+pub fn slope_rows(methods: &[MethodResult], families: &[Box<dyn Family>]) -> Vec<SlopeRow> {
+    let mut rows = Vec::new();
+    for m in methods {
+        for (c, fam) in m.curves.iter().zip(families) {
+            let (Some(slope), Some(expected)) = (c.slope, expected_slope(c.smoothness)) else {
+                continue;
+            };
+            if fam.dims() != 2 {
+                continue;
+            }
+            rows.push(SlopeRow {
+                method: m.label.clone(),
+                integrand: c.integrand.clone(),
+                slope,
+                expected,
+                meets: slope <= expected + 0.25,
+            });
+        }
+    }
+    rows
+}
+
+fn harness_config(quick: bool, seed: u64) -> HarnessConfig {
+    let max_log2 = if quick { 14 } else { 16 };
+    let mut sizes: Vec<usize> = (2..=max_log2).map(|k| 1usize << k).collect();
+    // Non-power sizes: 1.5·2^k sits between the net sizes.
+    sizes.extend((3..max_log2).map(|k| 3usize << (k - 1)));
+    sizes.sort_unstable();
+    HarnessConfig {
+        sizes,
+        replicates: if quick { 8 } else { 32 },
+        seed,
+    }
+}
+
+fn quick_methods(all: Vec<Method>) -> Vec<Method> {
+    let keep = [
+        "none",
+        "owen-oracle:base=2",
+        "owen-oracle:base=4",
+        "owen-oracle:base=16",
+        "art-owen-2",
+        "q-art-4",
+        "art-owen-16p",
+        "art-owen-t2",
+        "art-owen-t4",
+        "lk-hash",
+    ];
+    all.into_iter()
+        .filter(|m| {
+            m.sequence == "random"
+                || (keep.contains(&m.scrambler.as_str())
+                    && !(m.sequence == "sobol" && m.scrambler.starts_with("art-owen-t"))
+                    && !(m.sequence != "sobol" && m.scrambler == "lk-hash"))
+        })
+        .collect()
+}
+
+/// Runs everything; `progress(done, total, what)` is called as parts finish.
+pub fn build_report(
+    registry: &Registry,
+    config: &ReportConfig,
+    progress: &dyn Fn(usize, usize, &str),
+) -> Result<Report, ReportError> {
+    let start = Instant::now();
+    let families = standard_families(4);
+    let harness = harness_config(config.quick, config.seed);
+    let mut methods = methods_for(registry, &SequenceKind::ALL);
+    if config.quick {
+        methods = quick_methods(methods);
+    }
+    let total = methods.len() + 3;
+    let mut results = Vec::with_capacity(methods.len());
+    for (k, m) in methods.iter().enumerate() {
+        results.push(run_method(registry, m, &families, &harness).map_err(ReportError::Harness)?);
+        progress(k + 1, total, &m.label());
+    }
+    let speed = measure_speed(registry, config.quick);
+    progress(methods.len() + 1, total, "speed");
+    let requests: Vec<String> = speed.iter().map(|s| s.scrambler.clone()).collect();
+    let quality = measure_quality(registry, &requests);
+    progress(methods.len() + 2, total, "randomization quality");
+    let discrepancy = discrepancy_curves(registry, config.quick);
+    progress(total, total, "discrepancy curves");
+    let slopes = slope_rows(&results, &families);
+    Ok(Report {
+        schema: REPORT_SCHEMA.into(),
+        schema_version: REPORT_VERSION,
+        tool_version: env!("CARGO_PKG_VERSION").into(),
+        quick: config.quick,
+        thresholds: Thresholds {
+            slope: 0.15,
+            rmse_factor: 1.0 + 3.0 / (2.0 * harness.replicates as f64).sqrt(),
+            speed_factor: 1.5,
+        },
+        harness,
+        integrands: families.iter().map(|f| f.name()).collect(),
+        methods: results,
+        slopes,
+        speed,
+        quality,
+        discrepancy,
+        threads: rayon::current_num_threads(),
+        seconds: start.elapsed().as_secs_f64(),
+    })
+}
+
+/// One regression against a baseline.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Regression {
+    /// What regressed (method and integrand, or scrambler).
+    pub what: String,
+    /// The baseline value.
+    pub before: f64,
+    /// This run's value.
+    pub after: f64,
+    /// The threshold that was crossed, in words.
+    pub rule: String,
+}
+
+/// Compares `now` with `baseline`: slopes, RMSE at the largest common N, and speed ratios.
+pub fn compare(baseline: &Report, now: &Report) -> Vec<Regression> {
+    let t = &now.thresholds;
+    let mut out = Vec::new();
+    for m in &now.methods {
+        let Some(old) = baseline.methods.iter().find(|o| o.label == m.label) else {
+            continue;
+        };
+        for c in &m.curves {
+            let Some(oc) = old.curves.iter().find(|o| o.integrand == c.integrand) else {
+                continue;
+            };
+            if let (Some(a), Some(b)) = (oc.slope, c.slope) {
+                if b > a + t.slope {
+                    out.push(Regression {
+                        what: format!("{} on {}: slope", m.label, c.integrand),
+                        before: a,
+                        after: b,
+                        rule: format!("slope rose by more than {}", t.slope),
+                    });
+                }
+            }
+            let common =
+                c.n.iter()
+                    .zip(&c.rmse)
+                    .filter_map(|(n, r)| {
+                        oc.n.iter()
+                            .position(|m| m == n)
+                            .map(|k| (*n, *r, oc.rmse[k]))
+                    })
+                    .max_by_key(|x| x.0);
+            if let Some((n, r, or)) = common {
+                if r > or * t.rmse_factor {
+                    out.push(Regression {
+                        what: format!("{} on {}: RMSE at N = {n}", m.label, c.integrand),
+                        before: or,
+                        after: r,
+                        rule: format!("RMSE grew by more than ×{:.3}", t.rmse_factor),
+                    });
+                }
+            }
+        }
+    }
+    for s in &now.speed {
+        if let Some(o) = baseline.speed.iter().find(|o| o.scrambler == s.scrambler) {
+            if s.ratio_to_lk_hash > o.ratio_to_lk_hash * t.speed_factor {
+                out.push(Regression {
+                    what: format!("{}: time per coordinate relative to lk-hash", s.scrambler),
+                    before: o.ratio_to_lk_hash,
+                    after: s.ratio_to_lk_hash,
+                    rule: format!("ratio grew by more than ×{}", t.speed_factor),
+                });
+            }
+        }
+    }
+    out
+}
+
+/// Reads a baseline report.json.
+pub fn read_baseline(path: &Path) -> Result<Report, ReportError> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| ReportError::Baseline(format!("cannot read {}: {e}", path.display())))?;
+    let v: serde_json::Value = serde_json::from_str(&text)
+        .map_err(|e| ReportError::Baseline(format!("{}: not JSON: {e}", path.display())))?;
+    if v["schema"] != REPORT_SCHEMA || v["schema_version"] != REPORT_VERSION {
+        return Err(ReportError::Baseline(format!(
+            "{}: not a {REPORT_SCHEMA} version {REPORT_VERSION} file",
+            path.display()
+        )));
+    }
+    serde_json::from_value(v).map_err(|e| ReportError::Baseline(format!("{}: {e}", path.display())))
+}
+
+/// The methods each RMSE figure shows (to keep the legend readable).
+const FIGURE_METHODS: [&str; 9] = [
+    "random",
+    "sobol+none",
+    "sobol+owen-oracle:base=2",
+    "sobol+art-owen-2",
+    "sz16+none",
+    "sz16+art-owen-2",
+    "sz16+art-owen-16p",
+    "sz16+owen-oracle:base=16",
+    "sz16+art-owen-t4",
+];
+
+/// The integrands with RMSE figures.
+const FIGURE_INTEGRANDS: [&str; 6] = [
+    "heaviside",
+    "hard-disk",
+    "gaussian-2d",
+    "soft-disk",
+    "genz-oscillatory-2d",
+    "genz-corner-peak-4d",
+];
+
+/// Writes every figure into `dir`; returns the file names.
+pub fn write_figures(
+    report: &Report,
+    registry: &Registry,
+    dir: &Path,
+) -> Result<Vec<String>, ReportError> {
+    let mut files = Vec::new();
+    let fig = ReportError::Figure;
+    for integrand in FIGURE_INTEGRANDS {
+        let Some(k) = report.integrands.iter().position(|i| i == integrand) else {
+            continue;
+        };
+        let series: Vec<Series> = FIGURE_METHODS
+            .iter()
+            .filter_map(|label| report.methods.iter().find(|m| m.label == *label))
+            .map(|m| Series {
+                label: m.label.clone(),
+                points: m.curves[k]
+                    .n
+                    .iter()
+                    .zip(&m.curves[k].rmse)
+                    .filter(|(n, _)| crate::harness::is_power_of(**n, 2))
+                    .map(|(n, r)| (*n as f64, *r))
+                    .collect(),
+            })
+            .collect();
+        let name = format!("rmse_{integrand}.png");
+        loglog_lines(
+            &dir.join(&name),
+            &format!(
+                "RMSE against N: {integrand} (R = {})",
+                report.harness.replicates
+            ),
+            "N (points)",
+            "RMSE",
+            &series,
+            &[-0.5, -1.0, -1.5],
+        )
+        .map_err(fig)?;
+        files.push(name);
+    }
+    // Speed against error: RMSE at the largest N against time per point.
+    for integrand in ["gaussian-2d", "heaviside"] {
+        let k = report
+            .integrands
+            .iter()
+            .position(|i| i == integrand)
+            .expect("standard");
+        let pts: Vec<Series> = report
+            .methods
+            .iter()
+            .map(|m| Series {
+                label: m.label.clone(),
+                points: vec![(
+                    m.seconds_per_point * 1e9,
+                    *m.curves[k].rmse.last().expect("sizes"),
+                )],
+            })
+            .collect();
+        let name = format!("efficiency_{integrand}.png");
+        loglog_points(
+            &dir.join(&name),
+            &format!(
+                "Speed against error: {integrand}, N = {}",
+                report.harness.sizes.iter().max().expect("sizes")
+            ),
+            "time per point (ns, 4 coordinates)",
+            "RMSE",
+            &pts,
+        )
+        .map_err(fig)?;
+        files.push(name);
+    }
+    // Figure 1: sz16, first 8 dimensions, pairs (j, j+1).
+    for n in [256usize, 512] {
+        let pairs: Vec<[usize; 2]> = (0..7).map(|j| [j, j + 1]).collect();
+        let mut rows = Vec::new();
+        for (label, request) in [
+            ("unscrambled", "none"),
+            ("ArtOwen2", "art-owen-2"),
+            ("ArtOwen16P", "art-owen-16p"),
+        ] {
+            let w = sz16_words(registry, request, 8, n, 1);
+            let value = |i: usize, j: usize| w[i * 8 + j] as f64 * 2f64.powi(-32);
+            let sets: Vec<Vec<[f64; 2]>> = pairs
+                .iter()
+                .map(|p| (0..n).map(|i| [value(i, p[0]), value(i, p[1])]).collect())
+                .collect();
+            rows.push((
+                format!("{label} points"),
+                sets.iter().map(|s| Panel::Scatter(s.clone())).collect(),
+            ));
+            rows.push((
+                format!("{label} spectrum"),
+                sets.iter()
+                    .map(|s| Panel::Spectrum {
+                        values: power_spectrum(s, 24),
+                        max_freq: 24,
+                    })
+                    .collect(),
+            ));
+        }
+        let name = format!("figure1_sz16_n{n}.png");
+        panel_grid(
+            &dir.join(&name),
+            &format!("Figure 1: sz16, first 8 dimensions, N = {n} (spectra |f| ≤ 24, log grey)"),
+            &pairs
+                .iter()
+                .map(|p| format!("dims {},{}", p[0], p[1]))
+                .collect::<Vec<_>>(),
+            &rows,
+        )
+        .map_err(fig)?;
+        files.push(name);
+    }
+    // Figure 2: joint 16-D and pair curves.
+    let joint: Vec<Series> = report
+        .discrepancy
+        .iter()
+        .map(|c| Series {
+            label: format!("{} (16-D)", c.scrambler),
+            points: c
+                .n
+                .iter()
+                .zip(&c.joint)
+                .map(|(n, v)| (*n as f64, *v))
+                .collect(),
+        })
+        .collect();
+    loglog_lines(
+        &dir.join("figure2_joint.png"),
+        "Figure 2a: mean L2-star D², sz16 in 16-D: binary vs base-16 scrambling",
+        "N (points)",
+        "mean D²",
+        &joint,
+        &[-1.0],
+    )
+    .map_err(fig)?;
+    files.push("figure2_joint.png".into());
+    let mut pair_series = Vec::new();
+    for c in &report.discrepancy {
+        for (k, p) in c
+            .pairs
+            .iter()
+            .enumerate()
+            .filter(|(_, p)| [1, 2, 3, 5, 15].contains(&p[1]))
+        {
+            pair_series.push(Series {
+                label: format!("{} dims {},{}", c.scrambler, p[0], p[1]),
+                points: c
+                    .n
+                    .iter()
+                    .zip(&c.pair_values)
+                    .map(|(n, v)| (*n as f64, v[k]))
+                    .collect(),
+            });
+        }
+    }
+    loglog_lines(
+        &dir.join("figure2_pairs.png"),
+        "Figure 2b: mean 2-D L2-star D² of sz16 pairs: binary vs base-16 scrambling",
+        "N (points)",
+        "mean D²",
+        &pair_series,
+        &[-2.0],
+    )
+    .map_err(fig)?;
+    files.push("figure2_pairs.png".into());
+    Ok(files)
+}
+
+/// The Markdown report.
+pub fn markdown(report: &Report, figures: &[String], regressions: Option<&[Regression]>) -> String {
+    let mut md = String::new();
+    let h = &report.harness;
+    md += &format!(
+        "# gartowen report{}\n\ngartowen {} · {} worker threads · {:.1} s · R = {} replicates · \
+         N up to {} · seed {}\n\n",
+        if report.quick { " (quick)" } else { "" },
+        report.tool_version,
+        report.threads,
+        report.seconds,
+        h.replicates,
+        h.sizes.iter().max().unwrap_or(&0),
+        h.seed
+    );
+    md += "Errors are deterministic (fixed seeds); times are this machine's and are compared \
+           with baselines only as ratios to `lk-hash` measured in the same run.\n\n";
+    md += "## Convergence slopes (2-D integrands, fitted over N = b^k ≥ 64)\n\n\
+           Owen-scrambled nets should reach about −1.5 on smooth integrands and about −0.75 on \
+           discontinuous ones. A slope meets the rate when it is at most 0.25 above it.\n\n";
+    let integrands: Vec<&String> = {
+        let mut v: Vec<&String> = report.slopes.iter().map(|s| &s.integrand).collect();
+        v.sort();
+        v.dedup();
+        v
+    };
+    md += &format!(
+        "| method | {} |\n|---|{}\n",
+        integrands
+            .iter()
+            .map(|s| s.as_str())
+            .collect::<Vec<_>>()
+            .join(" | "),
+        "---|".repeat(integrands.len())
+    );
+    for m in &report.methods {
+        let cells: Vec<String> = integrands
+            .iter()
+            .map(|i| {
+                report
+                    .slopes
+                    .iter()
+                    .find(|s| s.method == m.label && &&s.integrand == i)
+                    .map_or("–".into(), |s| {
+                        format!("{:.2}{}", s.slope, if s.meets { "" } else { " ✗" })
+                    })
+            })
+            .collect();
+        md += &format!("| {} | {} |\n", m.label, cells.join(" | "));
+    }
+    let misses: Vec<&SlopeRow> = report
+        .slopes
+        .iter()
+        .filter(|s| !s.meets && !s.method.ends_with("+none") && s.method != "random")
+        .collect();
+    md += &format!(
+        "\nScrambled methods that miss the predicted rate: {}.\n\n",
+        if misses.is_empty() {
+            "none".to_string()
+        } else {
+            let mut names: Vec<String> = misses.iter().map(|s| s.method.clone()).collect();
+            names.dedup();
+            names.join(", ")
+        }
+    );
+    md += "## Speed and randomization quality\n\n\
+           ns per 32-bit coordinate (random words, dims 0..8), its ratio to `lk-hash`, table bytes, \
+           and the node-permutation law against uniform S_b from `verify --level quick`.\n\n\
+           | scrambler | base | ns/coord | × lk-hash | table bytes | nested | node law | detail |\n\
+           |---|---|---|---|---|---|---|---|\n";
+    for s in &report.speed {
+        let q = report.quality.iter().find(|q| q.scrambler == s.scrambler);
+        md += &format!(
+            "| {} | {} | {:.1} | {:.2} | {} | {} | {} | {} |\n",
+            s.scrambler,
+            s.base,
+            s.ns_per_coord,
+            s.ratio_to_lk_hash,
+            s.table_bytes,
+            q.map_or("–".into(), |q| format!("{:?}", q.nested).to_lowercase()),
+            q.map_or("–".into(), |q| format!("{:?}", q.node_law).to_lowercase()),
+            q.map_or(String::new(), |q| q.detail.clone())
+        );
+    }
+    md += "\n## Discrepancy (Figure 2 data): mean L2-star D² of sz16\n\n| scrambler | N | joint 16-D | mean over pairs (0,j) |\n|---|---|---|---|\n";
+    for c in &report.discrepancy {
+        for (k, n) in c.n.iter().enumerate() {
+            let mean = c.pair_values[k].iter().sum::<f64>() / c.pair_values[k].len() as f64;
+            md += &format!(
+                "| {} | {} | {:.4e} | {:.4e} |\n",
+                c.scrambler, n, c.joint[k], mean
+            );
+        }
+    }
+    md += "\n## Figures\n\n";
+    for f in figures {
+        md += &format!("![{f}]({f})\n\n");
+    }
+    if let Some(r) = regressions {
+        md += &format!(
+            "## Baseline comparison\n\nThresholds: slope +{}, RMSE ×{:.3}, speed ratio ×{}.\n\n",
+            report.thresholds.slope, report.thresholds.rmse_factor, report.thresholds.speed_factor
+        );
+        if r.is_empty() {
+            md += "No regressions.\n";
+        }
+        for x in r {
+            md += &format!(
+                "- REGRESSION {}: {:.4e} → {:.4e} ({})\n",
+                x.what, x.before, x.after, x.rule
+            );
+        }
+    }
+    md
+}
+
+/// Writes report.json, report.md and the figures into `dir`; returns the regressions against
+/// `baseline` (empty without one).
+pub fn write_report(
+    report: &Report,
+    registry: &Registry,
+    dir: &Path,
+    baseline: Option<&Report>,
+) -> Result<Vec<Regression>, ReportError> {
+    std::fs::create_dir_all(dir)
+        .map_err(|e| ReportError::Io(format!("cannot create {}: {e}", dir.display())))?;
+    let figures = write_figures(report, registry, dir)?;
+    let regressions = baseline.map(|b| compare(b, report));
+    let write = |name: &str, text: &str| -> Result<PathBuf, ReportError> {
+        let path = dir.join(name);
+        let tmp = dir.join(format!(".{name}.tmp"));
+        std::fs::write(&tmp, text)
+            .and_then(|_| std::fs::rename(&tmp, &path))
+            .map_err(|e| ReportError::Io(format!("cannot write {}: {e}", path.display())))?;
+        Ok(path)
+    };
+    write(
+        "report.json",
+        &serde_json::to_string_pretty(report).expect("serializable"),
+    )?;
+    write(
+        "report.md",
+        &markdown(report, &figures, regressions.as_deref()),
+    )?;
+    Ok(regressions.unwrap_or_default())
+}

@@ -1,0 +1,99 @@
+//! End-to-end `gartowen report --quick`: files, figures, and the baseline gate's exit codes.
+
+use std::process::{Command, Output};
+
+fn gartowen(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_gartowen"))
+        .args(args)
+        .output()
+        .expect("runs")
+}
+
+#[test]
+fn quick_report_writes_figures_and_the_baseline_gate_works() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = |p: &str| dir.path().join(p).to_str().unwrap().to_string();
+    // Bad baselines are usage errors before any work.
+    std::fs::write(path("junk.json"), "{\"schema\": \"other\"}").unwrap();
+    for bad in [path("junk.json"), path("missing.json")] {
+        let o = gartowen(&["report", "--quick", "--out", &path("x"), "--baseline", &bad]);
+        assert_eq!(o.status.code(), Some(2));
+        assert!(String::from_utf8_lossy(&o.stderr).contains("baseline"));
+    }
+    let o = gartowen(&["report", "--quick", "--out", "/proc/no/such/dir"]);
+    assert_eq!(o.status.code(), Some(2));
+
+    let o = gartowen(&["report", "--quick", "--out", &path("a")]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    for f in [
+        "report.md",
+        "report.json",
+        "rmse_heaviside.png",
+        "rmse_gaussian-2d.png",
+        "efficiency_gaussian-2d.png",
+        "figure1_sz16_n256.png",
+        "figure1_sz16_n512.png",
+        "figure2_joint.png",
+        "figure2_pairs.png",
+    ] {
+        let bytes = std::fs::read(path(&format!("a/{f}"))).unwrap();
+        if f.ends_with(".png") {
+            assert_eq!(&bytes[..4], b"\x89PNG", "{f}");
+        }
+    }
+    let md = std::fs::read_to_string(path("a/report.md")).unwrap();
+    assert!(md.contains("## Convergence slopes"));
+    assert!(md.contains("| owen-oracle:base=16 | 16 |"));
+
+    // The same seeds reproduce every error figure; doctor the baseline to be better than
+    // possible so that this run regresses.
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(path("a/report.json")).unwrap()).unwrap();
+    for m in v["methods"].as_array_mut().unwrap() {
+        for c in m["curves"].as_array_mut().unwrap() {
+            for r in c["rmse"].as_array_mut().unwrap() {
+                *r = serde_json::json!(r.as_f64().unwrap() / 10.0);
+            }
+        }
+    }
+    std::fs::write(path("better.json"), v.to_string()).unwrap();
+    let o = gartowen(&[
+        "report",
+        "--quick",
+        "--out",
+        &path("b"),
+        "--baseline",
+        &path("better.json"),
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        text.contains("REGRESSION") && text.contains("RMSE at N = 16384"),
+        "{text}"
+    );
+    // Error figures are deterministic: the second run's RMSE equal the first's.
+    let a: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(path("a/report.json")).unwrap()).unwrap();
+    let b: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(path("b/report.json")).unwrap()).unwrap();
+    for (ma, mb) in a["methods"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .zip(b["methods"].as_array().unwrap())
+    {
+        for (ca, cb) in ma["curves"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .zip(mb["curves"].as_array().unwrap())
+        {
+            assert_eq!(ca["rmse"], cb["rmse"]);
+        }
+    }
+}
