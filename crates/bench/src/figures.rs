@@ -51,6 +51,16 @@ fn log_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
     (lo / 1.5, hi * 1.5)
 }
 
+/// Tick labels for log axes: 1e-5 rather than 9.99999999e-6.
+fn short_number(v: f64) -> String {
+    if (1e-2..1e5).contains(&v.abs()) {
+        let s = format!("{v:.2}");
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        format!("{v:.0e}")
+    }
+}
+
 fn color(i: usize) -> RGBColor {
     let c = Palette99::pick(i).to_rgba();
     RGBColor(c.0, c.1, c.2)
@@ -83,6 +93,8 @@ pub fn loglog_lines(
         .configure_mesh()
         .x_desc(x_desc)
         .y_desc(y_desc)
+        .x_label_formatter(&|v| short_number(*v))
+        .y_label_formatter(&|v| short_number(*v))
         .label_style((FONT, 13))
         .axis_desc_style((FONT, 15))
         .draw()
@@ -122,13 +134,15 @@ pub fn loglog_lines(
     root.present().map_err(fail)
 }
 
-/// Log-log labelled points (one per series, its first point): the speed-against-error picture.
+/// Log-log points (one per series, its first point): the speed-against-error picture. Every
+/// point is drawn; only series whose label is in `labelled` get their name written beside it.
 pub fn loglog_points(
     path: &Path,
     title: &str,
     x_desc: &str,
     y_desc: &str,
     points: &[Series],
+    labelled: &[&str],
 ) -> Result<(), FigureError> {
     register_fonts();
     let root = BitMapBackend::new(path, (900, 620)).into_drawing_area();
@@ -147,18 +161,24 @@ pub fn loglog_points(
         .configure_mesh()
         .x_desc(x_desc)
         .y_desc(y_desc)
+        .x_label_formatter(&|v| short_number(*v))
+        .y_label_formatter(&|v| short_number(*v))
         .label_style((FONT, 13))
         .axis_desc_style((FONT, 15))
         .draw()
         .map_err(fail)?;
     for (i, s) in points.iter().enumerate() {
         let c = color(i);
-        let label = s.label.clone();
+        let label = if labelled.contains(&s.label.as_str()) {
+            s.label.clone()
+        } else {
+            String::new()
+        };
         chart
             .draw_series(s.points.iter().take(1).map(|&p| {
                 EmptyElement::at(p)
                     + Circle::new((0, 0), 4, c.filled())
-                    + Text::new(label.clone(), (6, -6), (FONT, 11).into_font())
+                    + Text::new(label.clone(), (6, -6), (FONT, 12).into_font())
             }))
             .map_err(fail)?;
     }
