@@ -30,4 +30,6 @@ if $g inspect --scramble owen-oracle:base=16 --base 2 --width 16 --seed 1 > "$ou
   exit 1
 fi
 echo "expected: $(head -1 "$out/inspect_base2.txt")"
+# Speed against error, quick: report.md, report.json and figures.
+$g report --quick --out "$out/report"
 echo "reports in $out/"
