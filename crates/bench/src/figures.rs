@@ -66,28 +66,29 @@ fn color(i: usize) -> RGBColor {
     RGBColor(c.0, c.1, c.2)
 }
 
-/// Log-log lines with reference slopes drawn through the first point of the first series.
-pub fn loglog_lines(
-    path: &Path,
+type LogLogChart<'a> =
+    ChartContext<'a, BitMapBackend<'a>, Cartesian2d<LogCoord<f64>, LogCoord<f64>>>;
+
+/// A 900×620 log-log chart fitted to `series` (x range stretched by `x_stretch` to leave room
+/// for labels), with a captioned, labelled mesh.
+fn log_log_chart<'a>(
+    root: &DrawingArea<BitMapBackend<'a>, Shift>,
     title: &str,
     x_desc: &str,
     y_desc: &str,
     series: &[Series],
-    reference_slopes: &[f64],
-) -> Result<(), FigureError> {
-    register_fonts();
-    let root = BitMapBackend::new(path, (900, 620)).into_drawing_area();
+    x_stretch: f64,
+) -> Result<LogLogChart<'a>, FigureError> {
     root.fill(&WHITE).map_err(fail)?;
     let all = || series.iter().flat_map(|s| s.points.iter());
     let (x0, x1) = log_range(all().map(|p| p.0));
     let (y0, y1) = log_range(all().map(|p| p.1));
-    let mut chart = ChartBuilder::on(&root)
+    let mut chart = ChartBuilder::on(root)
         .caption(title, (FONT, 22))
         .margin(12)
         .x_label_area_size(40)
         .y_label_area_size(70)
-        .right_y_label_area_size(10)
-        .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
+        .build_cartesian_2d((x0..x1 * x_stretch).log_scale(), (y0..y1).log_scale())
         .map_err(fail)?;
     chart
         .configure_mesh()
@@ -99,6 +100,22 @@ pub fn loglog_lines(
         .axis_desc_style((FONT, 15))
         .draw()
         .map_err(fail)?;
+    Ok(chart)
+}
+
+/// Log-log lines with reference slopes drawn through the first point of the first series.
+pub fn loglog_lines(
+    path: &Path,
+    title: &str,
+    x_desc: &str,
+    y_desc: &str,
+    series: &[Series],
+    reference_slopes: &[f64],
+) -> Result<(), FigureError> {
+    register_fonts();
+    let root = BitMapBackend::new(path, (900, 620)).into_drawing_area();
+    let mut chart = log_log_chart(&root, title, x_desc, y_desc, series, 1.0)?;
+    let x1 = log_range(series.iter().flat_map(|s| s.points.iter()).map(|p| p.0)).1;
     if let Some(&(ax, ay)) = series.first().and_then(|s| s.points.first()) {
         for (k, &slope) in reference_slopes.iter().enumerate() {
             let grey = RGBColor(150, 150, 150);
@@ -146,27 +163,7 @@ pub fn loglog_points(
 ) -> Result<(), FigureError> {
     register_fonts();
     let root = BitMapBackend::new(path, (900, 620)).into_drawing_area();
-    root.fill(&WHITE).map_err(fail)?;
-    let all = || points.iter().flat_map(|s| s.points.iter());
-    let (x0, x1) = log_range(all().map(|p| p.0));
-    let (y0, y1) = log_range(all().map(|p| p.1));
-    let mut chart = ChartBuilder::on(&root)
-        .caption(title, (FONT, 22))
-        .margin(12)
-        .x_label_area_size(40)
-        .y_label_area_size(70)
-        .build_cartesian_2d((x0..x1 * 3.0).log_scale(), (y0..y1).log_scale())
-        .map_err(fail)?;
-    chart
-        .configure_mesh()
-        .x_desc(x_desc)
-        .y_desc(y_desc)
-        .x_label_formatter(&|v| short_number(*v))
-        .y_label_formatter(&|v| short_number(*v))
-        .label_style((FONT, 13))
-        .axis_desc_style((FONT, 15))
-        .draw()
-        .map_err(fail)?;
+    let mut chart = log_log_chart(&root, title, x_desc, y_desc, points, 3.0)?;
     for (i, s) in points.iter().enumerate() {
         let c = color(i);
         let label = if labelled.contains(&s.label.as_str()) {
