@@ -170,6 +170,9 @@ fn points(
     Ok((v, start.elapsed().as_secs_f64()))
 }
 
+/// One replicate's squared errors, [family][size], and its sampling seconds.
+type ReplicateErrors = (Vec<Vec<f64>>, f64);
+
 /// Runs one method over the families.
 pub fn run_method(
     registry: &Registry,
@@ -189,7 +192,7 @@ pub fn run_method(
     let n_max = *sizes.last().expect("nonempty");
     let dims = families.iter().map(|f| f.dims()).max().unwrap_or(1);
     // Per replicate: squared errors [family][size] and the sampling time.
-    let per_rep: Vec<Result<(Vec<Vec<f64>>, f64), HarnessError>> = (0..config.replicates)
+    let per_rep: Vec<Result<ReplicateErrors, HarnessError>> = (0..config.replicates)
         .into_par_iter()
         .map(|r| {
             let seed = derive_seed(config.seed, r);
