@@ -252,7 +252,7 @@ mod fuzz {
         let p = Path::new("fuzz");
         for r in [read_npy, read_csv, read_hex] {
             if let Ok(set) = r(p, bytes) {
-                assert!(set.len() >= 1 && set.dims() >= 1);
+                assert!(!set.is_empty() && set.dims() >= 1);
             }
         }
     }
@@ -268,9 +268,7 @@ mod fuzz {
         ] {
             let mut bytes = npy_header("<f8", false, shape);
             bytes.extend_from_slice(&[0u8; 16]);
-            let e = read_npy(Path::new("big.npy"), &bytes)
-                .err()
-                .expect("refused");
+            let e = read_npy(Path::new("big.npy"), &bytes).expect_err("refused");
             assert!(e.to_string().contains("big.npy"), "{e}");
         }
     }
