@@ -742,6 +742,11 @@ pub fn markdown(report: &Report, figures: &[String], regressions: Option<&[Regre
         h.sizes.iter().max().unwrap_or(&0),
         h.seed
     );
+    if report.quick {
+        md += "Quick mode: R and N are small, so slopes scatter by about ±0.2 and a few fits miss \
+               the predicted rate by chance; the full report (without --quick) is the one to read \
+               for rates.\n\n";
+    }
     md += "Errors are deterministic (fixed seeds); times are this machine's and are compared \
            with baselines only as ratios to `lk-hash` measured in the same run.\n\n";
     md += "## Convergence slopes (2-D integrands, fitted over N = b^k ≥ 64)\n\n\
