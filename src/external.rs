@@ -275,14 +275,7 @@ pub fn decode_request(bytes: &[u8]) -> Result<(RequestHeader, Vec<u64>), String>
         return Err(format!("reserved field {:#x} is not 0", u32_at(20)));
     }
     let seed = u64::from_le_bytes(bytes[24..32].try_into().expect("8 bytes"));
-    let words = bytes[HEADER_BYTES..]
-        .chunks_exact(wb)
-        .map(|c| {
-            let mut b = [0u8; 8];
-            b[..wb].copy_from_slice(c);
-            u64::from_le_bytes(b)
-        })
-        .collect();
+    let words = words_from_le(&bytes[HEADER_BYTES..], wb);
     Ok((
         RequestHeader {
             width,
@@ -326,14 +319,19 @@ pub fn decode_reply(
             detail: format!("reply count {n}, the request had {count}"),
         });
     }
-    Ok(bytes[8..]
+    Ok(words_from_le(&bytes[8..], wb))
+}
+
+/// Little-endian words of `wb` bytes each (a trailing partial word is ignored).
+fn words_from_le(bytes: &[u8], wb: usize) -> Vec<u64> {
+    bytes
         .chunks_exact(wb)
         .map(|c| {
             let mut b = [0u8; 8];
             b[..wb].copy_from_slice(c);
             u64::from_le_bytes(b)
         })
-        .collect())
+        .collect()
 }
 
 struct Session {
@@ -448,11 +446,6 @@ impl ExternalProcess {
         &self.command
     }
 
-    /// The word width.
-    pub fn width(&self) -> Width {
-        self.width
-    }
-
     /// The base.
     pub fn base(&self) -> PowerOfTwoBase {
         self.base
@@ -466,11 +459,6 @@ impl ExternalProcess {
     /// The first failure of this session, if any.
     pub fn failure(&self) -> Option<ExternalError> {
         self.session.lock().expect("session").failure.clone()
-    }
-
-    /// Requests so far.
-    pub fn batches(&self) -> u64 {
-        self.session.lock().expect("session").batches
     }
 
     fn stderr_tail(&self) -> String {

@@ -557,6 +557,25 @@ pub fn check_candidate(c: &Candidate, level: Level, claimants: usize) -> ImplRep
     }
 }
 
+/// Instances of registry entry `request` for any seed, in `base` unless the request names one.
+fn registry_seeds<'a>(
+    registry: &'a Registry,
+    request: &'a str,
+    base: PowerOfTwoBase,
+) -> Box<SeedBuilder<'a>> {
+    Box::new(move |seed| {
+        registry
+            .build_with(
+                request,
+                &BuildContext {
+                    seed,
+                    default_base: base,
+                },
+            )
+            .map_err(|e| e.to_string())
+    })
+}
+
 /// The candidate for registry entry `request` at position `index`.
 pub fn registry_candidate<'a>(
     registry: &'a Registry,
@@ -569,17 +588,7 @@ pub fn registry_candidate<'a>(
         index,
         name: probe.name(),
         probe,
-        with_seed: Box::new(move |seed| {
-            registry
-                .build_with(
-                    request,
-                    &BuildContext {
-                        seed,
-                        default_base: base,
-                    },
-                )
-                .map_err(|e| e.to_string())
-        }),
+        with_seed: registry_seeds(registry, request, base),
         invertible: true,
         health: Box::new(|| None),
         twin: None,
@@ -652,18 +661,7 @@ pub fn external_candidate<'a>(
         invertible: false,
         health: Box::new(move || watched.failure().map(|e| e.to_string())),
         twin: twin.map(|(registry, request)| {
-            let build: Box<SeedBuilder<'a>> = Box::new(move |s| {
-                registry
-                    .build_with(
-                        request,
-                        &BuildContext {
-                            seed: s,
-                            default_base: base,
-                        },
-                    )
-                    .map_err(|e| e.to_string())
-            });
-            (request.to_string(), build)
+            (request.to_string(), registry_seeds(registry, request, base))
         }),
     }
 }

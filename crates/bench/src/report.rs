@@ -9,7 +9,7 @@ use crate::figures::{loglog_lines, loglog_points, panel_grid, FigureError, Panel
 use crate::harness::{methods_for, run_method, HarnessConfig, HarnessError, Method, MethodResult};
 use crate::integrands::{standard_families, Family, Smoothness};
 use crate::spectrum::power_spectrum;
-use gartowen::core::{BuildContext, Registry, SplitMix64, Width};
+use gartowen::core::{BuildContext, PowerOfTwoBase, Registry, SplitMix64, Width};
 use gartowen::discrepancy::{curves, Kind};
 use gartowen::seq::SequenceKind;
 use gartowen::verify::{verify, Level, Verdict};
@@ -131,6 +131,17 @@ pub struct Report {
     pub seconds: f64,
 }
 
+impl Report {
+    /// The slopes of scrambled methods (not the unscrambled or random references) that miss
+    /// the predicted rate.
+    pub fn missed_slopes(&self) -> Vec<&SlopeRow> {
+        self.slopes
+            .iter()
+            .filter(|s| !s.meets && !s.method.ends_with("+none") && s.method != "random")
+            .collect()
+    }
+}
+
 /// Why a report could not be made.
 #[derive(Debug)]
 pub enum ReportError {
@@ -170,7 +181,7 @@ pub struct ReportConfig {
 fn ns_per_coord(
     registry: &Registry,
     request: &str,
-    base_default: u32,
+    default_base: PowerOfTwoBase,
     reps: u32,
 ) -> (f64, u32, usize) {
     let s = registry
@@ -178,8 +189,7 @@ fn ns_per_coord(
             request,
             &BuildContext {
                 seed: 1,
-                default_base: gartowen::core::PowerOfTwoBase::from_base(base_default as u64)
-                    .expect("registry base"),
+                default_base,
             },
         )
         .expect("registry entry");
@@ -215,8 +225,7 @@ pub fn measure_speed(registry: &Registry, quick: bool) -> Vec<SpeedRow> {
             } else {
                 reps
             };
-            let (ns, base, table_bytes) =
-                ns_per_coord(registry, &request, spec.default_base.base(), r);
+            let (ns, base, table_bytes) = ns_per_coord(registry, &request, spec.default_base, r);
             SpeedRow {
                 scrambler: request,
                 base,
@@ -782,11 +791,7 @@ pub fn markdown(report: &Report, figures: &[String], regressions: Option<&[Regre
             .collect();
         md += &format!("| {} | {} |\n", m.label, cells.join(" | "));
     }
-    let misses: Vec<&SlopeRow> = report
-        .slopes
-        .iter()
-        .filter(|s| !s.meets && !s.method.ends_with("+none") && s.method != "random")
-        .collect();
+    let misses = report.missed_slopes();
     md += &format!(
         "\nScrambled methods that miss the predicted rate: {}.\n\n",
         if misses.is_empty() {

@@ -53,16 +53,39 @@ impl Scrambler for WholeWordHash {
     }
     fn scramble(&self, x: u64, _width: Width, dim: u32) -> u64 {
         // MurmurHash3's finalizer: a bijection of 32-bit words.
-        let mut h = (x ^ hash_words(&[self.0, dim as u64])) as u32;
+        let mut h = (x ^ self.key(dim)) as u32;
         h ^= h >> 16;
         h = h.wrapping_mul(0x85EB_CA6B);
         h ^= h >> 13;
         h = h.wrapping_mul(0xC2B2_AE35);
         (h ^ (h >> 16)) as u64
     }
-    fn unscramble(&self, _y: u64, _width: Width, _dim: u32) -> u64 {
-        unimplemented!("not needed by the harness")
+    fn unscramble(&self, y: u64, _width: Width, dim: u32) -> u64 {
+        // Each step undone in reverse: x ^= x >> 16 is an involution on 32 bits, x ^= x >> 13
+        // is undone by x ^ (x >> 13) ^ (x >> 26), and the multipliers by their inverses mod 2^32.
+        let mut h = y as u32;
+        h ^= h >> 16;
+        h = h.wrapping_mul(inverse_mod_2_32(0xC2B2_AE35));
+        h ^= (h >> 13) ^ (h >> 26);
+        h = h.wrapping_mul(inverse_mod_2_32(0x85EB_CA6B));
+        h ^= h >> 16;
+        (h as u64) ^ (self.key(dim) & 0xFFFF_FFFF)
     }
+}
+
+impl WholeWordHash {
+    fn key(&self, dim: u32) -> u64 {
+        hash_words(&[self.0, dim as u64])
+    }
+}
+
+/// The inverse of an odd multiplier modulo 2^32 (Newton's iteration doubles the correct bits).
+fn inverse_mod_2_32(a: u32) -> u32 {
+    let mut x = a; // correct to 3 bits for odd a
+    for _ in 0..4 {
+        x = x.wrapping_mul(2u32.wrapping_sub(a.wrapping_mul(x)));
+    }
+    x
 }
 
 fn registry() -> Registry {

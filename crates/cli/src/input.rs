@@ -132,25 +132,34 @@ fn utf8<'a>(path: &Path, bytes: &'a [u8]) -> Result<&'a str, CliError> {
     std::str::from_utf8(bytes).map_err(|_| bad(path, "not a text file (invalid UTF-8)"))
 }
 
+/// Records the first row's width in `dims` and rejects a later row of another width.
+fn same_width(
+    path: &Path,
+    dims: &mut Option<usize>,
+    line_no: usize,
+    len: usize,
+    what: &str,
+) -> Result<(), CliError> {
+    match *dims {
+        None => *dims = Some(len),
+        Some(d) if d != len => {
+            return Err(bad(
+                path,
+                format!("line {line_no} has {len} {what}, earlier lines have {d}"),
+            ))
+        }
+        _ => {}
+    }
+    Ok(())
+}
+
 fn read_csv(path: &Path, bytes: &[u8]) -> Result<PointSet, CliError> {
     let text = utf8(path, bytes)?;
     let mut values = Vec::new();
     let mut dims = None;
     for (line_no, line) in data_lines(text) {
         let row: Vec<&str> = line.split(',').map(str::trim).collect();
-        match dims {
-            None => dims = Some(row.len()),
-            Some(d) if d != row.len() => {
-                return Err(bad(
-                    path,
-                    format!(
-                        "line {line_no} has {} values, earlier lines have {d}",
-                        row.len()
-                    ),
-                ))
-            }
-            _ => {}
-        }
+        same_width(path, &mut dims, line_no, row.len(), "values")?;
         for field in row {
             let v: f64 = field
                 .parse()
@@ -169,19 +178,7 @@ fn read_hex(path: &Path, bytes: &[u8]) -> Result<PointSet, CliError> {
     let mut digits = None;
     for (line_no, line) in data_lines(text) {
         let row: Vec<&str> = line.split_whitespace().collect();
-        match dims {
-            None => dims = Some(row.len()),
-            Some(d) if d != row.len() => {
-                return Err(bad(
-                    path,
-                    format!(
-                        "line {line_no} has {} words, earlier lines have {d}",
-                        row.len()
-                    ),
-                ))
-            }
-            _ => {}
-        }
+        same_width(path, &mut dims, line_no, row.len(), "words")?;
         for tok in row {
             let tok = tok.trim_start_matches("0x");
             match digits {

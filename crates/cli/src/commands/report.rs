@@ -78,16 +78,7 @@ pub fn run(a: ReportArgs) -> Result<ExitCode, CliError> {
     bar.finish_and_clear();
     let regressions =
         write_report(&report, &registry, &a.out, baseline.as_ref()).map_err(cli_error)?;
-    let misses: Vec<String> = {
-        let mut v: Vec<String> = report
-            .slopes
-            .iter()
-            .filter(|s| !s.meets && !s.method.ends_with("+none") && s.method != "random")
-            .map(|s| format!("{} ({} {:.2})", s.method, s.integrand, s.slope))
-            .collect();
-        v.dedup();
-        v
-    };
+    let misses = report.missed_slopes();
     println!(
         "report in {} ({} methods, {:.1} s); scrambled methods missing the predicted slope: {}",
         a.out.display(),
