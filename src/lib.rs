@@ -8,12 +8,19 @@ pub use gartowen_discrepancy as discrepancy;
 pub use gartowen_netcheck as netcheck;
 pub use gartowen_oracles as oracles;
 pub use gartowen_seq as seq;
+pub use gartowen_verify as battery;
 
 use gartowen_core::Registry;
 
-pub mod certificate;
-pub mod external;
-pub mod verify;
+pub use gartowen_verify::{certificate, external};
+
+/// The conformance battery (`gartowen verify`), from the `gartowen-verify` crate.
+pub mod verify {
+    pub use gartowen_verify::battery::*;
+    pub use gartowen_verify::law::{Requirement, SubTest};
+    pub use gartowen_verify::sampling::SeedBuilder;
+    pub use gartowen_verify::{dimensions, joint, laws, marginal, pair_lemma, stats};
+}
 
 /// Every scrambler gartowen knows, in one list; cross-checks iterate over it.
 pub fn registry() -> Registry {

@@ -1,9 +1,10 @@
 //! External implementations through the stdin/stdout protocol: the C examples under
-//! `examples/external/` (a correct twin of `owen-per-bit-hash` and a broken non-nested hash)
-//! and misbehaving children (crash, hang, short and garbage replies). Needs a C compiler `cc`,
-//! which the Rust toolchain already requires for linking.
+//! `examples/external/` (a correct twin of `owen-per-bit-hash`, a broken non-nested hash, and
+//! the imitations a digital shift and the LK hashes) and misbehaving children (crash, hang,
+//! short and garbage replies). Needs a C compiler `cc`, which the Rust toolchain already
+//! requires for linking.
 
-use gartowen::core::{PowerOfTwoBase, Width};
+use gartowen::core::{Claim, PowerOfTwoBase, Width};
 use gartowen::external::{ExternalError, ExternalProcess};
 use gartowen::verify::{check_candidate, external_candidate, Level, Verdict};
 use std::path::PathBuf;
@@ -11,9 +12,10 @@ use std::process::Command;
 use std::sync::{Arc, OnceLock};
 use std::time::Duration;
 
-/// Compiles the examples once per test binary.
-fn examples() -> &'static (PathBuf, PathBuf) {
-    static BUILT: OnceLock<(PathBuf, PathBuf)> = OnceLock::new();
+/// Compiles the examples once per test binary: (owen_per_bit, broken_hash, digital_shift,
+/// lk_hash).
+fn examples() -> &'static (PathBuf, PathBuf, PathBuf, PathBuf) {
+    static BUILT: OnceLock<(PathBuf, PathBuf, PathBuf, PathBuf)> = OnceLock::new();
     BUILT.get_or_init(|| {
         let dir = std::env::temp_dir().join(format!("gartowen-external-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
@@ -29,8 +31,40 @@ fn examples() -> &'static (PathBuf, PathBuf) {
             assert!(status.success(), "compiling {name}.c failed");
             out
         };
-        (build("owen_per_bit"), build("broken_hash"))
+        (
+            build("owen_per_bit"),
+            build("broken_hash"),
+            build("digital_shift"),
+            build("lk_hash"),
+        )
     })
+}
+
+fn check<'a>(r: &'a gartowen::verify::ImplReport, name: &str) -> &'a gartowen::verify::CheckResult {
+    r.checks.iter().find(|c| c.check == name).unwrap()
+}
+
+#[test]
+fn imitations_claiming_owen_fail_the_joint_laws_as_external_programs() {
+    let ex = examples();
+    for (command, fails) in [
+        (ex.2.display().to_string(), &["pair-law", "flip-rank", "pair-lemma"][..]),
+        (ex.3.display().to_string(), &["flip-rank"][..]),
+        (format!("{} improved", ex.3.display()), &["flip-rank"][..]),
+    ] {
+        let p = spawn(&command, Width::W32, 10_000);
+        let c = external_candidate(Arc::new(p), 0, Claim::OWEN, None);
+        let r = check_candidate(&c, Level::Quick, 1);
+        // Structure and single-node laws hold: the imitations are nested and fair node by node.
+        for ok in ["injective", "nested", "nets", "node-law"] {
+            assert_eq!(check(&r, ok).verdict, Verdict::Pass, "{command} {ok}");
+        }
+        for f in fails {
+            let c = check(&r, f);
+            assert_eq!(c.verdict, Verdict::Fail, "{command} {f}: {}", c.detail);
+            assert!(c.detail.contains("depth") || c.detail.contains("r = "), "{}", c.detail);
+        }
+    }
 }
 
 fn spawn(command: &str, width: Width, timeout_ms: u64) -> ExternalProcess {
@@ -48,14 +82,28 @@ fn correct_example_passes_bit_exact_against_its_builtin_twin() {
     let registry = gartowen::registry();
     for width in [Width::W32, Width::W64] {
         let p = spawn(examples().0.to_str().unwrap(), width, 10_000);
-        let c = external_candidate(Arc::new(p), 7, true, Some((&registry, "owen-per-bit-hash")));
+        let c = external_candidate(Arc::new(p), 7, Claim::OWEN, Some((&registry, "owen-per-bit-hash")));
         let r = check_candidate(&c, Level::Quick, 1);
         let names: Vec<&str> = r.checks.iter().map(|c| c.check.as_str()).collect();
-        assert_eq!(names, ["injective", "nested", "nets", "node-law", "expect"]);
+        assert_eq!(
+            names,
+            [
+                "injective",
+                "nested",
+                "nets",
+                "node-law",
+                "pair-law",
+                "flip-rank",
+                "collisions",
+                "pair-lemma",
+                "dimensions",
+                "expect"
+            ]
+        );
         for check in &r.checks {
             assert_eq!(check.verdict, Verdict::Pass, "{width:?} {check:?}");
         }
-        assert!(r.checks[4].detail.contains("bit-exact"));
+        assert!(check(&r, "expect").detail.contains("bit-exact"));
     }
 }
 
@@ -64,9 +112,9 @@ fn expect_catches_a_twin_that_differs() {
     // The correct program is not lk-hash: the expect check must name the first differing word.
     let registry = gartowen::registry();
     let p = spawn(examples().0.to_str().unwrap(), Width::W32, 10_000);
-    let c = external_candidate(Arc::new(p), 0, true, Some((&registry, "lk-hash")));
+    let c = external_candidate(Arc::new(p), 0, Claim::OWEN, Some((&registry, "lk-hash")));
     let r = check_candidate(&c, Level::Quick, 1);
-    let expect = &r.checks[4];
+    let expect = check(&r, "expect");
     assert_eq!(expect.verdict, Verdict::Fail);
     assert!(
         expect.detail.contains("seed 0, dim 0, word 0x0"),
@@ -78,7 +126,7 @@ fn expect_catches_a_twin_that_differs() {
 #[test]
 fn broken_example_is_rejected_naming_the_failing_node() {
     let p = spawn(examples().1.to_str().unwrap(), Width::W32, 10_000);
-    let c = external_candidate(Arc::new(p), 0, true, None);
+    let c = external_candidate(Arc::new(p), 0, Claim::OWEN, None);
     let r = check_candidate(&c, Level::Quick, 1);
     assert!(r.failed());
     // A bijection of words, so injectivity holds; nestedness does not.
@@ -208,7 +256,7 @@ fn a_hanging_program_times_out_and_nothing_is_left_running() {
 #[test]
 fn a_failing_program_fails_every_check_with_the_reason() {
     let p = spawn("sh -c 'exec sleep 30'", Width::W32, 200);
-    let c = external_candidate(Arc::new(p), 0, true, None);
+    let c = external_candidate(Arc::new(p), 0, Claim::OWEN, None);
     let r = check_candidate(&c, Level::Quick, 1);
     for check in &r.checks {
         assert_eq!(check.verdict, Verdict::Fail);

@@ -1,10 +1,11 @@
 //! `verify` passes the registry and fails each deliberately broken implementation on the check
 //! it should: translation-only claimed as uniform (node-law), a non-nested hash (nested), and an
-//! off-by-one keying whose node at depth k sees its own digit (nested).
+//! off-by-one keying whose node at depth k sees its own digit (nested). Claims decide what is
+//! judged: the ART family claims marginal laws only, so its joint laws are measured.
 
 use gartowen::core::registry::BuildContext;
 use gartowen::core::{
-    mix64, CoreError, DigitLayout, PowerOfTwoBase, Registry, Scrambler, ScramblerRequest,
+    mix64, Claim, CoreError, DigitLayout, PowerOfTwoBase, Registry, Scrambler, ScramblerRequest,
     ScramblerSpec, Width,
 };
 use gartowen::oracles::{FullTreeOwen, OwenVariant};
@@ -19,8 +20,8 @@ impl Scrambler for FalseClaim {
     fn base(&self) -> PowerOfTwoBase {
         self.0.base()
     }
-    fn claims_nested_uniform(&self) -> bool {
-        true
+    fn claim(&self) -> Claim {
+        Claim::OWEN
     }
     fn scramble(&self, x: u64, w: Width, d: u32) -> u64 {
         self.0.scramble(x, w, d)
@@ -39,8 +40,8 @@ impl Scrambler for NonNested {
     fn base(&self) -> PowerOfTwoBase {
         PowerOfTwoBase::B2
     }
-    fn claims_nested_uniform(&self) -> bool {
-        true
+    fn claim(&self) -> Claim {
+        Claim::OWEN
     }
     fn scramble(&self, x: u64, w: Width, _d: u32) -> u64 {
         (x ^ (self.0 & w.mask())).wrapping_mul(0x9E37_79B9_7F4A_7C15 | 1) & w.mask()
@@ -64,8 +65,8 @@ impl Scrambler for OffByOne {
     fn base(&self) -> PowerOfTwoBase {
         PowerOfTwoBase::B4
     }
-    fn claims_nested_uniform(&self) -> bool {
-        true
+    fn claim(&self) -> Claim {
+        Claim::OWEN
     }
     fn scramble(&self, x: u64, w: Width, d: u32) -> u64 {
         let l = DigitLayout::new(w, PowerOfTwoBase::B4);
@@ -118,15 +119,27 @@ fn the_registry_passes_quick_verification() {
             r.name
         );
     }
-    // Non-claimants get a measured distance, not a verdict.
-    assert_eq!(
-        verdict(&reports, "art-owen-t4:table=256", "node-law"),
-        Verdict::Measured
-    );
-    assert_eq!(
-        verdict(&reports, "art-owen-16p:table=256", "node-law"),
-        Verdict::Pass
-    );
+    // Judged on what is claimed, measured otherwise.
+    for (name, check, v) in [
+        ("none", "node-law", Verdict::Measured),
+        ("art-owen-t4:table=256", "node-law", Verdict::Pass),
+        ("art-owen-16p:table=256", "node-law", Verdict::Pass),
+        ("art-owen-16p:table=256", "pair-law", Verdict::Measured),
+        ("art-owen-16p:table=256", "dimensions", Verdict::Pass),
+        ("owen-oracle:uniform:base=2", "pair-law", Verdict::Pass),
+        ("owen-oracle:uniform:base=2", "flip-rank", Verdict::Pass),
+        ("owen-per-bit-hash", "collisions", Verdict::Pass),
+        ("lk-hash", "flip-rank", Verdict::Measured),
+    ] {
+        assert_eq!(verdict(&reports, name, check), v, "{name} {check}");
+    }
+    // ART's finite table shows in the measured collision profile (nodes outnumber symbols).
+    let art = reports
+        .iter()
+        .find(|r| r.name == "art-owen-16p:table=256")
+        .unwrap();
+    let collisions = &art.profile.iter().find(|(f, _)| f == "collisions").unwrap().1;
+    assert!(collisions.contains('x'), "{collisions}");
 }
 
 #[test]
@@ -135,7 +148,7 @@ fn broken_implementations_fail_the_check_they_should() {
     let spec = |name, base, build| ScramblerSpec {
         name,
         default_base: base,
-        claims_nested_uniform: true,
+        claim: Claim::OWEN,
         summary: "broken",
         build,
     };

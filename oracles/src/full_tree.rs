@@ -244,8 +244,15 @@ impl Scrambler for FullTreeOwen {
         self.base
     }
 
-    fn claims_nested_uniform(&self) -> bool {
-        self.variant == OwenVariant::Uniform
+    /// Independent node permutations, uniform over the variant's group.
+    fn claim(&self) -> gartowen_core::Claim {
+        use gartowen_core::NodeGroup;
+        gartowen_core::Claim::independent_over(match self.variant {
+            OwenVariant::Uniform => NodeGroup::Symmetric,
+            OwenVariant::CyclicShift => NodeGroup::Cyclic,
+            OwenVariant::Xor => NodeGroup::Translation,
+            OwenVariant::Affine => NodeGroup::Affine,
+        })
     }
 
     fn scramble(&self, x: u64, width: Width, dim: u32) -> u64 {
@@ -254,6 +261,11 @@ impl Scrambler for FullTreeOwen {
 
     fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
         self.run(y, width, dim, true)
+    }
+
+    /// The memoizing batch path (each node drawn once per batch).
+    fn scramble_batch(&self, xs: &mut [u64], width: Width, dim: u32) {
+        FullTreeOwen::scramble_batch(self, xs, width, dim)
     }
 }
 

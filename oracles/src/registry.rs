@@ -33,7 +33,7 @@ pub fn specs() -> Vec<ScramblerSpec> {
     vec![ScramblerSpec {
         name: "owen-oracle",
         default_base: PowerOfTwoBase::B2,
-        claims_nested_uniform: true,
+        claim: gartowen_core::Claim::OWEN,
         summary: "exact full-tree Owen scramble; options :uniform (default) | :cyclic | :xor | :affine, :base=B",
         build,
     }]

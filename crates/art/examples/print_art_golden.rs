@@ -1,6 +1,6 @@
 //! Prints golden vectors of every ART variant and peer (seed 2024, 256 symbols, dimension 1) for
 //! tests/golden.rs. Regenerate only on a deliberate change of the documented construction.
-use gartowen_art::peers::{LkFlavor, LkHash, PerBitOwen};
+use gartowen_art::peers::{DigitalShift, LkFlavor, LkHash, PerBitOwen};
 use gartowen_art::{ArtOwen, ArtVariant};
 use gartowen_core::{Scrambler, Width};
 
@@ -27,6 +27,7 @@ fn main() {
         Box::new(LkHash::new(LkFlavor::Improved, 2024)),
     ));
     list.push(("owen-per-bit-hash".into(), Box::new(PerBitOwen::new(2024))));
+    list.push(("digital-shift".into(), Box::new(DigitalShift::new(2024))));
     for (name, s) in list {
         let out: Vec<String> = inputs
             .iter()

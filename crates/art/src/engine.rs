@@ -11,6 +11,24 @@
 //! Tail rule: when q does not divide W, the last digit has r < q bits; it gets the translation
 //! F_k only (ψ acts on q-bit digits), which keeps the map a bijection. Inversion recovers
 //! x_k = ψ^{-1}(y_k ⊕ F_k) before navigating.
+//!
+//! **Dimensions.** One table per seed serves every dimension. A root symbol hash(seed, dim) mod
+//! |Σ| alone lets two of 16 dimensions share the identical scramble for about 40% of seeds
+//! (birthday bound with 256 symbols). So dimension j also gets an input shift A_j and an output
+//! shift D_j (W-bit words, the top bits of 64-bit words drawn per dimension):
+//!
+//! ```text
+//! scramble_j(x) = ART_{root_j}(x ⊕ A_j) ⊕ D_j
+//! ```
+//!
+//! Both shifts are nested digital shifts, so the composition is still a nested scramble, and the
+//! node permutations keep their marginal law (ψ(d ⊕ a) ⊕ c is uniform over S_b, AGL(q,2) or the
+//! translations whenever ψ ⊕ c is). The top 32 bits of D_j are a bijection of j (a keyed
+//! 32-bit mixer), so two dimensions with the same root and input shift differ on every word of
+//! 32 bits or more: no two dimensions share a scramble by construction. A_j sends the two
+//! dimensions through different regions of the tree, so sharing a root costs at most a
+//! correlation between node permutations at different positions of one tree (measured by the
+//! verify battery's dimension tests). Cost: two XORs per word.
 
 use crate::{ArtVariant, Grammar};
 use gartowen_core::{
@@ -33,8 +51,49 @@ struct Step {
     local: u32,
 }
 
-/// Number of dimensions whose root symbol is precomputed.
+/// Tag for the dimension shifts (`hash_words([seed, dim, SHIFT_TAG])`).
+const SHIFT_TAG: u64 = 0x7368_6966_74; // "shift"
+
+/// Number of dimensions whose root symbol and shifts are precomputed.
 const CACHED_ROOTS: u32 = 256;
+
+/// Deliberate defects, for showing that the verify battery catches broken ART implementations.
+/// [`ArtMutant::None`] is the real scrambler; the others are never registered.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ArtMutant {
+    /// The correct scrambler.
+    #[default]
+    None,
+    /// The grammar never descends: child(s, d) = s, so every node at a depth has the root's
+    /// symbol and (for ψ = identity) the same permutation.
+    NeverDescends,
+    /// One code for every symbol: the translation depends on the depth only.
+    OneCodePerDepth,
+    /// Every dimension starts at one root with no dimension shifts: all dimensions coincide.
+    OneRoot,
+    /// The top bit of every code (field 0's most significant bit) stuck at 0.
+    StuckCodeBit,
+    /// The design before dimension shifts: hashed roots only, so dimensions can coincide.
+    RootOnlyDimensions,
+}
+
+/// A 32-bit bijection (murmur3's finalizer): distinct inputs give distinct outputs.
+#[inline]
+fn mix32(mut x: u32) -> u32 {
+    x ^= x >> 16;
+    x = x.wrapping_mul(0x85eb_ca6b);
+    x ^= x >> 13;
+    x = x.wrapping_mul(0xc2b2_ae35);
+    x ^ (x >> 16)
+}
+
+/// Per-dimension constants: root symbol, input shift A and output shift D (top-aligned).
+#[derive(Debug, Clone, Copy, Default)]
+struct DimKey {
+    root: u32,
+    input_shift: u64,
+    output_shift: u64,
+}
 
 /// An ART-Owen scrambler: grammar, per-symbol ψ and codes, and the seed that chose them.
 #[derive(Debug, Clone)]
@@ -55,8 +114,9 @@ pub struct ArtOwen {
     step_next: Vec<u32>,
     step_local: Vec<u16>,
     step_carry: Vec<u64>,
-    /// Root symbols of dimensions 0..CACHED_ROOTS.
-    roots: Vec<u32>,
+    /// Root symbols and shifts of dimensions 0..CACHED_ROOTS.
+    dims: Vec<DimKey>,
+    mutant: ArtMutant,
 }
 
 impl ArtOwen {
@@ -66,6 +126,16 @@ impl ArtOwen {
         variant: ArtVariant,
         symbols: usize,
         seed: u64,
+    ) -> Result<Self, crate::grammar::GrammarError> {
+        Self::with_mutant(variant, symbols, seed, ArtMutant::None)
+    }
+
+    /// The scrambler with a deliberate defect (tests of the verify battery only).
+    pub fn with_mutant(
+        variant: ArtVariant,
+        symbols: usize,
+        seed: u64,
+        mutant: ArtMutant,
     ) -> Result<Self, crate::grammar::GrammarError> {
         let len = crate::grammar::length_for_size(symbols)?;
         let grammar = Grammar::shared(len, variant.q())?;
@@ -82,6 +152,14 @@ impl ArtOwen {
                 psi_inv.extend_from_slice(&inv.as_slice()[..b]);
             }
         }
+        match mutant {
+            ArtMutant::OneCodePerDepth => {
+                let first = codes[0];
+                codes.iter_mut().for_each(|c| *c = first);
+            }
+            ArtMutant::StuckCodeBit => codes.iter_mut().for_each(|c| *c &= !(1u64 << 63)),
+            _ => {}
+        }
         let mut art = ArtOwen {
             variant,
             seed,
@@ -93,9 +171,10 @@ impl ArtOwen {
             step_next: Vec::new(),
             step_local: Vec::new(),
             step_carry: Vec::new(),
-            roots: Vec::new(),
+            dims: Vec::new(),
+            mutant,
         };
-        art.roots = (0..CACHED_ROOTS).map(|d| art.hashed_root(d)).collect();
+        art.dims = (0..CACHED_ROOTS).map(|d| art.hashed_dim(d)).collect();
         let steps = art.build_steps();
         art.step_next = steps.iter().map(|e| e.next).collect();
         art.step_local = steps.iter().map(|e| e.local as u16).collect();
@@ -117,7 +196,7 @@ impl ArtOwen {
                     g ^= self.codes[s as usize] >> (q * i);
                     let f = ((g >> (64 - q * (i + 1))) & ((1 << q) - 1)) as u32;
                     local = (local << q) | (self.psi_apply(s, d) ^ f);
-                    s = self.grammar.child(s, d);
+                    s = self.child(s, d);
                 }
                 out.push(Step {
                     carry: g,
@@ -142,15 +221,55 @@ impl ArtOwen {
     /// The root symbol of dimension `dim`: hash of (seed, dim) reduced without bias.
     #[inline]
     pub fn root(&self, dim: u32) -> u32 {
-        match self.roots.get(dim as usize) {
-            Some(&r) => r,
-            None => self.hashed_root(dim),
+        self.dim_key(dim).root
+    }
+
+    /// The (input, output) shifts of dimension `dim`, top-aligned 64-bit words (a W-bit word
+    /// uses their top W bits). See the module doc.
+    pub fn dimension_shifts(&self, dim: u32) -> (u64, u64) {
+        let k = self.dim_key(dim);
+        (k.input_shift, k.output_shift)
+    }
+
+    #[inline]
+    fn dim_key(&self, dim: u32) -> DimKey {
+        match self.dims.get(dim as usize) {
+            Some(&k) => k,
+            None => self.hashed_dim(dim),
         }
     }
 
-    fn hashed_root(&self, dim: u32) -> u32 {
-        SplitMix64::new(hash_words(&[self.seed, dim as u64, ROOT_TAG]))
-            .bounded(self.grammar.symbols())
+    fn hashed_dim(&self, dim: u32) -> DimKey {
+        let root = SplitMix64::new(hash_words(&[self.seed, dim as u64, ROOT_TAG]))
+            .bounded(self.grammar.symbols());
+        match self.mutant {
+            ArtMutant::OneRoot => DimKey::default(),
+            ArtMutant::RootOnlyDimensions => DimKey {
+                root,
+                ..DimKey::default()
+            },
+            _ => {
+                let mut rng = SplitMix64::new(hash_words(&[self.seed, dim as u64, SHIFT_TAG]));
+                let input_shift = rng.next_u64();
+                // Top half: a keyed bijection of dim, so output shifts never repeat.
+                let key = rng.next_u32();
+                let output_shift = ((mix32(dim ^ key) as u64) << 32) | rng.next_u32() as u64;
+                DimKey {
+                    root,
+                    input_shift,
+                    output_shift,
+                }
+            }
+        }
+    }
+
+    #[inline(always)]
+    fn child(&self, s: u32, d: u32) -> u32 {
+        if self.mutant == ArtMutant::NeverDescends {
+            s
+        } else {
+            self.grammar.child(s, d)
+        }
     }
 
     /// The forward scramble through the step table, in the relative frame G = F << q·k (digit
@@ -180,7 +299,7 @@ impl ArtOwen {
             g ^= self.codes[s as usize];
             out = (out << q) | (self.psi_apply(s, d) ^ (g >> (64 - q)) as u32) as u64;
             g <<= q;
-            s = self.grammar.child(s, d);
+            s = self.child(s, d);
         }
         let r = w % q;
         if r != 0 {
@@ -215,20 +334,25 @@ impl ArtOwen {
 
     #[inline]
     fn run(&self, x: u64, width: Width, dim: u32, inverse: bool) -> u64 {
+        let k = self.dim_key(dim);
+        let top = 64 - width.bits();
+        let (a, d) = (k.input_shift >> top, k.output_shift >> top);
         if inverse {
-            self.run_from(x, width, self.root(dim), true)
+            self.run_from(x ^ d, width, k.root, true) ^ a
         } else {
-            self.forward_fast(x, width, self.root(dim))
+            self.forward_fast(x ^ a, width, k.root) ^ d
         }
     }
 
     /// The forward scramble by the plain digit-by-digit loop (the reference for the step table).
     pub fn scramble_digit_by_digit(&self, x: u64, width: Width, dim: u32) -> u64 {
-        self.run_from(x, width, self.root(dim), false)
+        let k = self.dim_key(dim);
+        let top = 64 - width.bits();
+        self.run_from(x ^ (k.input_shift >> top), width, k.root, false) ^ (k.output_shift >> top)
     }
 
-    /// The scramble (or its inverse) starting from root symbol `root` instead of the hashed
-    /// root of a dimension: lets tests cover every root symbol of a table.
+    /// The table's scramble (or its inverse) starting from root symbol `root`, without the
+    /// dimension shifts: lets tests cover every root symbol of a table.
     pub fn scramble_from_root(&self, x: u64, width: Width, root: u32, inverse: bool) -> u64 {
         assert!(root < self.grammar.symbols(), "root symbol out of range");
         self.run_from(x, width, root, inverse)
@@ -260,20 +384,31 @@ impl ArtOwen {
             };
             out = layout.set(out, k, mapped);
             if k + 1 < digits {
-                s = self.grammar.child(s, original);
+                s = self.child(s, original);
             }
         }
         out
     }
 
     /// The permutation this scrambler applies at node (depth k, original prefix p) of `dim`:
-    /// d ↦ ψ_{s_k}(d) ⊕ F_k, with s_k and F_k accumulated along the prefix (the explicit-tree
+    /// d ↦ ψ_{s_k}(d ⊕ a_k) ⊕ F_k ⊕ D_k, with s_k and F_k accumulated along the prefix shifted
+    /// by the dimension's input shift A, and a_k, D_k digit k of the dimension shifts (the explicit-tree
     /// bridge). The tail digit's node is d ↦ d ⊕ F_k on 2^r symbols.
     pub fn node_permutation(&self, width: Width, dim: u32, depth: u32, prefix: u64) -> Permutation {
         let q = self.q();
         let layout = DigitLayout::new(width, PowerOfTwoBase::from_q(q).expect("q ≤ 8"));
         let top = 64 - width.bits();
-        let mut s = self.root(dim);
+        let key = self.dim_key(dim);
+        let (a, dshift) = (key.input_shift >> top, key.output_shift >> top);
+        // The inner (unshifted) tree is walked by the shifted prefix.
+        let prefix_bits: u32 = (0..depth).map(|j| layout.digit_bits(j)).sum();
+        let prefix = if prefix_bits == 0 {
+            prefix
+        } else {
+            prefix ^ (a >> (width.bits() - prefix_bits))
+        };
+        let (a_k, d_k) = (layout.get(a, depth), layout.get(dshift, depth));
+        let mut s = key.root;
         let mut f = 0u64;
         for k in 0..=depth {
             f ^= self.codes[s as usize] >> (q * k);
@@ -281,13 +416,16 @@ impl ArtOwen {
                 // Digit k of the prefix (prefix holds digits 0..depth, most significant first).
                 let shift: u32 = (k + 1..depth).map(|j| layout.digit_bits(j)).sum();
                 let d = ((prefix >> shift) & ((1u64 << layout.digit_bits(k)) - 1)) as u32;
-                s = self.grammar.child(s, d);
+                s = self.child(s, d);
             }
         }
         let fk = layout.get(f >> top, depth);
         let bits = layout.digit_bits(depth);
         let images: Vec<u8> = (0..1u32 << bits)
-            .map(|d| ((if bits == q { self.psi_apply(s, d) } else { d }) ^ fk) as u8)
+            .map(|d| {
+                let z = d ^ a_k;
+                ((if bits == q { self.psi_apply(s, z) } else { z }) ^ fk ^ d_k) as u8
+            })
             .collect();
         Permutation::from_images(&images).expect("ψ ⊕ F is a bijection")
     }
@@ -302,8 +440,8 @@ impl Scrambler for ArtOwen {
         PowerOfTwoBase::from_q(self.q()).expect("q ≤ 8")
     }
 
-    fn claims_nested_uniform(&self) -> bool {
-        self.variant.claims_nested_uniform()
+    fn claim(&self) -> gartowen_core::Claim {
+        self.variant.claim()
     }
 
     fn scramble(&self, x: u64, width: Width, dim: u32) -> u64 {

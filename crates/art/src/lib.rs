@@ -11,6 +11,6 @@ pub mod peers;
 pub mod registry;
 pub mod variants;
 
-pub use engine::ArtOwen;
+pub use engine::{ArtMutant, ArtOwen};
 pub use grammar::Grammar;
 pub use variants::ArtVariant;

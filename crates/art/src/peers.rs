@@ -7,7 +7,7 @@
 //! permutations are not independent uniform flips. They act on 32-bit words (the constants are
 //! 32-bit); the per-bit Owen scramble works at any width.
 
-use gartowen_core::{hash_words, mix64, PowerOfTwoBase, Scrambler, Width};
+use gartowen_core::{hash_words, mix64, Claim, NodeGroup, PowerOfTwoBase, Scrambler, Width};
 
 /// Laine–Karras style permutation of a bit-reversed 32-bit word (the classic constants).
 #[inline(always)]
@@ -69,8 +69,9 @@ impl Scrambler for LkHash {
     fn base(&self) -> PowerOfTwoBase {
         PowerOfTwoBase::B2
     }
-    fn claims_nested_uniform(&self) -> bool {
-        false
+    /// Nested (triangular in reversed bits); no law is claimed.
+    fn claim(&self) -> Claim {
+        Claim::NESTED
     }
     fn supports_width(&self, width: Width) -> bool {
         width == Width::W32
@@ -139,8 +140,8 @@ impl Scrambler for PerBitOwen {
     fn base(&self) -> PowerOfTwoBase {
         PowerOfTwoBase::B2
     }
-    fn claims_nested_uniform(&self) -> bool {
-        true
+    fn claim(&self) -> Claim {
+        Claim::OWEN
     }
     fn scramble(&self, x: u64, width: Width, dim: u32) -> u64 {
         let w = width.bits();
@@ -162,5 +163,45 @@ impl Scrambler for PerBitOwen {
             x |= bit << (w - 1 - k);
         }
         x
+    }
+}
+
+/// A random digital shift: y = x ⊕ S_dim, with S_dim = hash_words([seed, dim]) (its top W
+/// bits for W-bit words). Every node permutation is a uniform translation, but all nodes of a
+/// depth share it: the cheapest imitation of Owen scrambling, kept to show that the verify
+/// battery tells it apart.
+#[derive(Debug, Clone)]
+pub struct DigitalShift {
+    seed: u64,
+}
+
+impl DigitalShift {
+    /// The shift with `seed`.
+    pub fn new(seed: u64) -> Self {
+        DigitalShift { seed }
+    }
+
+    #[inline(always)]
+    fn shift(&self, width: Width, dim: u32) -> u64 {
+        hash_words(&[self.seed, dim as u64]) >> (64 - width.bits())
+    }
+}
+
+impl Scrambler for DigitalShift {
+    fn name(&self) -> String {
+        "digital-shift".into()
+    }
+    fn base(&self) -> PowerOfTwoBase {
+        PowerOfTwoBase::B2
+    }
+    /// Node permutations are uniform translations; they are not independent.
+    fn claim(&self) -> Claim {
+        Claim::marginal(NodeGroup::Translation)
+    }
+    fn scramble(&self, x: u64, width: Width, dim: u32) -> u64 {
+        x ^ self.shift(width, dim)
+    }
+    fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
+        y ^ self.shift(width, dim)
     }
 }

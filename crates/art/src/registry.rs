@@ -1,10 +1,12 @@
 //! Registry entries: every ART-Owen variant (`NAME[:table=SYMBOLS]`, default 256 symbols) and
 //! the hash peers.
 
-use crate::peers::{LkFlavor, LkHash, PerBitOwen};
+use crate::peers::{DigitalShift, LkFlavor, LkHash, PerBitOwen};
 use crate::{ArtOwen, ArtVariant};
 use gartowen_core::registry::BuildContext;
-use gartowen_core::{CoreError, PowerOfTwoBase, Scrambler, ScramblerRequest, ScramblerSpec};
+use gartowen_core::{
+    Claim, CoreError, NodeGroup, PowerOfTwoBase, Scrambler, ScramblerRequest, ScramblerSpec,
+};
 
 /// Default alphabet size (L = 81).
 pub const DEFAULT_SYMBOLS: usize = 256;
@@ -67,6 +69,14 @@ fn build_per_bit(
     Ok(Box::new(PerBitOwen::new(ctx.seed)))
 }
 
+fn build_digital_shift(
+    req: &ScramblerRequest,
+    ctx: &BuildContext,
+) -> Result<Box<dyn Scrambler>, CoreError> {
+    req.allow_only(&[])?;
+    Ok(Box::new(DigitalShift::new(ctx.seed)))
+}
+
 const MATRIX_NAMES: [&str; 8] = [
     "art-owen-m1",
     "art-owen-m2",
@@ -95,7 +105,7 @@ pub fn specs() -> Vec<ScramblerSpec> {
         ScramblerSpec {
             name,
             default_base: PowerOfTwoBase::from_q(v.q()).expect("q ≤ 8"),
-            claims_nested_uniform: v.claims_nested_uniform(),
+            claim: v.claim(),
             summary,
             build: build_art,
         }
@@ -143,7 +153,7 @@ pub fn specs() -> Vec<ScramblerSpec> {
         out.push(ScramblerSpec {
             name,
             default_base: PowerOfTwoBase::B2,
-            claims_nested_uniform: false,
+            claim: Claim::NESTED,
             summary,
             build: build_lk,
         });
@@ -151,9 +161,16 @@ pub fn specs() -> Vec<ScramblerSpec> {
     out.push(ScramblerSpec {
         name: "owen-per-bit-hash",
         default_base: PowerOfTwoBase::B2,
-        claims_nested_uniform: true,
+        claim: Claim::OWEN,
         summary: "binary Owen scramble with one hashed flip per bit (pbrt-style)",
         build: build_per_bit,
+    });
+    out.push(ScramblerSpec {
+        name: "digital-shift",
+        default_base: PowerOfTwoBase::B2,
+        claim: Claim::marginal(NodeGroup::Translation),
+        summary: "random digital shift: XOR with one random word per dimension (an imitation)",
+        build: build_digital_shift,
     });
     out
 }

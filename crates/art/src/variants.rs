@@ -4,7 +4,7 @@
 //! top-aligned in 64 bits (field j, the contribution j levels down, in bits
 //! [64 − q(j+1), 64 − qj)), so 32- and 64-bit words share one table.
 
-use gartowen_core::{Gf2Matrix, Permutation, SplitMix64};
+use gartowen_core::{Claim, Gf2Matrix, NodeGroup, Permutation, SplitMix64};
 
 /// A member of the ART-Owen family.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -61,17 +61,19 @@ impl ArtVariant {
         }
     }
 
-    /// Whether node permutations are uniform over S_b: ψ uniform over S_b, or an affine family
-    /// that equals S_b (AGL(q,2) = S_b only for q ≤ 2), or translation in base 2.
-    pub fn claims_nested_uniform(self) -> bool {
-        match self {
+    /// What the variant promises: nested, and every node permutation marginally uniform over
+    /// S_b (binary, Q-ART, 8P, 16P), AGL(q,2) (M{q}) or the translations (T{q}). Node
+    /// permutations are not independent (nodes of one symbol share ψ and code), so no
+    /// independence is claimed; the verify battery measures the joint laws instead.
+    pub fn claim(self) -> Claim {
+        Claim::marginal(match self {
             ArtVariant::ArtOwen2
             | ArtVariant::QArt4
             | ArtVariant::ArtOwen8P
-            | ArtVariant::ArtOwen16P => true,
-            ArtVariant::Matrix(q) => q <= 2,
-            ArtVariant::Translation(q) => q == 1,
-        }
+            | ArtVariant::ArtOwen16P => NodeGroup::Symmetric,
+            ArtVariant::Matrix(_) => NodeGroup::Affine,
+            ArtVariant::Translation(_) => NodeGroup::Translation,
+        })
     }
 
     /// Draws one symbol's (ψ images or None for identity, top-aligned code).

@@ -54,6 +54,13 @@ pub struct QualityRow {
     pub chi_square: Option<f64>,
     /// The node-law detail in words.
     pub detail: String,
+    /// What it claims (`owen`, `marginal:symmetric`, …).
+    #[serde(default)]
+    pub claim: String,
+    /// How close to Owen, per law family: one character per depth 0, 1, … (`.` no deviation
+    /// detected, `x` deviation, `-` not tested), from `verify --level quick`.
+    #[serde(default)]
+    pub profile: Vec<(String, String)>,
 }
 
 /// One slope against its expectation.
@@ -263,6 +270,8 @@ pub fn measure_quality(registry: &Registry, requests: &[String]) -> Vec<QualityR
                 node_law: law.map_or(Verdict::Skipped, |c| c.verdict),
                 chi_square: law.and_then(|c| c.value),
                 detail: law.map_or(String::new(), |c| c.detail.clone()),
+                claim: r.claim.clone(),
+                profile: r.profile.clone(),
             }
         })
         .collect()
@@ -819,6 +828,34 @@ pub fn markdown(report: &Report, figures: &[String], regressions: Option<&[Regre
             q.map_or("–".into(), |q| format!("{:?}", q.nested).to_lowercase()),
             q.map_or("–".into(), |q| format!("{:?}", q.node_law).to_lowercase()),
             q.map_or(String::new(), |q| q.detail.clone())
+        );
+    }
+    md += "\n## How close to Owen\n\n\
+           Per law family of `verify --level quick`, one character per tree depth 0, 1, 2, …: \
+           `.` no deviation detected at the stated power, `x` a deviation at the per-test level, \
+           `-` not tested. Families a scrambler does not claim are measured, not judged.\n\n\
+           | scrambler | claim | ns/coord | node-law | pair-law | flip-rank | collisions | pair-lemma |\n\
+           |---|---|---|---|---|---|---|---|\n";
+    for s in &report.speed {
+        let Some(q) = report.quality.iter().find(|q| q.scrambler == s.scrambler) else {
+            continue;
+        };
+        let row = |family: &str| {
+            q.profile
+                .iter()
+                .find(|(f, _)| f == family)
+                .map_or("–".to_string(), |(_, r)| format!("`{r}`"))
+        };
+        md += &format!(
+            "| {} | {} | {:.1} | {} | {} | {} | {} | {} |\n",
+            s.scrambler,
+            q.claim,
+            s.ns_per_coord,
+            row("node-law"),
+            row("pair-law"),
+            row("flip-rank"),
+            row("collisions"),
+            row("pair-lemma")
         );
     }
     md += "\n## Discrepancy (Figure 2 data): mean L2-star D² of sz16\n\n| scrambler | N | joint 16-D | mean over pairs (0,j) |\n|---|---|---|---|\n";

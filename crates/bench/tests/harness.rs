@@ -24,8 +24,8 @@ impl Scrambler for DigitalShift {
     fn base(&self) -> PowerOfTwoBase {
         PowerOfTwoBase::B2
     }
-    fn claims_nested_uniform(&self) -> bool {
-        false
+    fn claim(&self) -> gartowen::core::Claim {
+        gartowen::core::Claim::NESTED
     }
     fn scramble(&self, x: u64, width: Width, dim: u32) -> u64 {
         x ^ (hash_words(&[self.0, dim as u64]) & width.mask())
@@ -45,8 +45,8 @@ impl Scrambler for WholeWordHash {
     fn base(&self) -> PowerOfTwoBase {
         PowerOfTwoBase::B2
     }
-    fn claims_nested_uniform(&self) -> bool {
-        true
+    fn claim(&self) -> gartowen::core::Claim {
+        gartowen::core::Claim::OWEN
     }
     fn supports_width(&self, width: Width) -> bool {
         width == Width::W32
@@ -103,7 +103,7 @@ fn registry() -> Registry {
         r.add(ScramblerSpec {
             name,
             default_base: PowerOfTwoBase::B2,
-            claims_nested_uniform: false,
+            claim: gartowen::core::Claim::NESTED,
             summary: "test defect",
             build,
         });
@@ -231,8 +231,8 @@ fn scramblers_without_32_bit_words_are_refused() {
             fn base(&self) -> PowerOfTwoBase {
                 PowerOfTwoBase::B2
             }
-            fn claims_nested_uniform(&self) -> bool {
-                false
+            fn claim(&self) -> gartowen::core::Claim {
+                gartowen::core::Claim::NESTED
             }
             fn supports_width(&self, w: Width) -> bool {
                 w == Width::W64
@@ -249,7 +249,7 @@ fn scramblers_without_32_bit_words_are_refused() {
     reg.add(ScramblerSpec {
         name: "wide",
         default_base: PowerOfTwoBase::B2,
-        claims_nested_uniform: false,
+        claim: gartowen::core::Claim::NESTED,
         summary: "64-bit only",
         build: wide,
     });

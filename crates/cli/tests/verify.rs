@@ -37,11 +37,68 @@ fn verify_named_implementations_writes_json_and_exits_0() {
     assert_eq!(v["command"], "verify");
     let imps = v["result"]["implementations"].as_array().unwrap();
     assert_eq!(imps.len(), 2);
-    assert_eq!(imps[0]["checks"].as_array().unwrap().len(), 4);
+    let names: Vec<&str> = imps[0]["checks"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| c["check"].as_str().unwrap())
+        .collect();
     assert_eq!(
-        imps[1]["checks"][3]["verdict"], "measured",
-        "lk-hash makes no uniformity claim"
+        names,
+        [
+            "inverse",
+            "nested",
+            "nets",
+            "node-law",
+            "pair-law",
+            "flip-rank",
+            "collisions",
+            "pair-lemma",
+            "dimensions"
+        ]
     );
+    for k in 3..9 {
+        assert_eq!(
+            imps[1]["checks"][k]["verdict"], "measured",
+            "lk-hash claims no law"
+        );
+    }
+    assert_eq!(imps[0]["claim"], "marginal:symmetric");
+    assert_eq!(imps[0]["checks"][3]["verdict"], "pass");
+    assert_eq!(imps[0]["checks"][4]["verdict"], "measured");
+    // Every law sub-test carries its p-value and power.
+    let sub = &imps[0]["checks"][3]["tests"][0];
+    assert!(sub["p_value"].is_number() && sub["power"].as_str().unwrap().len() > 10);
+}
+
+#[test]
+fn imitations_claiming_owen_fail_with_the_check_and_depth_named() {
+    let o = gartowen(&[
+        "verify",
+        "--impl",
+        "digital-shift",
+        "--impl",
+        "lk-hash",
+        "--impl",
+        "lk-hash-improved",
+        "--impl",
+        "owen-per-bit-hash",
+        "--claim",
+        "owen",
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains("3 with failures"), "{text}");
+    assert!(
+        text.contains("FAIL pair-law: deviation") && text.contains("siblings at depth 1"),
+        "{text}"
+    );
+    assert!(text.contains("FAIL flip-rank: deviation"), "{text}");
+    assert!(text.contains("profile (depth 0→)"), "{text}");
+    // A claim that does not parse is bad usage.
+    let o = gartowen(&["verify", "--impl", "lk-hash", "--claim", "owenish"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--claim owenish"));
 }
 
 #[test]
@@ -172,9 +229,12 @@ fn external_programs_are_verified_with_a_certificate() {
         16,
         "the program's bytes are checksummed"
     );
-    let checks = &v["result"]["implementations"][0]["checks"];
-    assert_eq!(checks[4]["check"], "expect");
-    assert_eq!(checks[4]["verdict"], "pass");
+    let checks = v["result"]["implementations"][0]["checks"].as_array().unwrap();
+    let expect = checks.last().unwrap();
+    assert_eq!(expect["check"], "expect");
+    assert_eq!(expect["verdict"], "pass");
+    assert!(checks.iter().all(|c| c["verdict"] == "pass"));
+    assert_eq!(v["parameters"]["external"]["claim"], "owen");
 
     let o = gartowen(&["verify", "--external", &broken, "--base", "2"]);
     assert_eq!(o.status.code(), Some(1));

@@ -5,6 +5,7 @@
 //! Conventions follow `DESIGN.md` section 1: a coordinate is a W-bit word `x` whose value is
 //! `x · 2^-W`; digit 0 is the most significant digit.
 
+pub mod claim;
 pub mod digits;
 pub mod error;
 pub mod float;
@@ -15,6 +16,7 @@ pub mod registry;
 pub mod scrambler;
 pub mod width;
 
+pub use claim::{Claim, NodeGroup};
 pub use digits::{DigitLayout, PowerOfTwoBase};
 pub use error::CoreError;
 pub use float::{word_from_f64, word_to_f32, word_to_f64};

@@ -2,7 +2,7 @@
 //! every implementation. Crates contribute [`ScramblerSpec`]s; the `gartowen` facade
 //! assembles the full registry.
 
-use crate::{CoreError, Identity, PowerOfTwoBase, Scrambler};
+use crate::{Claim, CoreError, Identity, PowerOfTwoBase, Scrambler};
 
 /// A parsed scrambler request `NAME[:OPTION[:OPTION…]]`, where an option is `key=value` or a
 /// bare word (e.g. `owen-oracle:xor`, `art-owen-16p:table=256`).
@@ -102,8 +102,8 @@ pub struct ScramblerSpec {
     pub name: &'static str,
     /// Its base when built without options (options such as `:base=` may change it).
     pub default_base: PowerOfTwoBase,
-    /// Whether it claims to be a nested uniform scramble.
-    pub claims_nested_uniform: bool,
+    /// What it claims when built without options (options such as `:xor` may change it).
+    pub claim: Claim,
     /// One line on what it is; options are listed here too.
     pub summary: &'static str,
     /// The constructor.
@@ -131,7 +131,7 @@ impl Registry {
         r.add(ScramblerSpec {
             name: "none",
             default_base: PowerOfTwoBase::B2,
-            claims_nested_uniform: false,
+            claim: Claim::NESTED,
             summary: "identity (unscrambled reference)",
             build: build_identity,
         });

@@ -1,6 +1,6 @@
 //! The one trait every scrambler implements, the exact oracle included.
 
-use crate::{word_to_f32, word_to_f64, PowerOfTwoBase, Width};
+use crate::{word_to_f32, word_to_f64, Claim, PowerOfTwoBase, Width};
 
 /// A random bijection of W-bit words, applied per dimension, that claims to be (at least)
 /// a nested scramble in base 2^q.
@@ -15,9 +15,15 @@ pub trait Scrambler: Send + Sync {
     /// The scrambling base 2^q.
     fn base(&self) -> PowerOfTwoBase;
 
+    /// What the implementation promises beyond nestedness: the group its node permutations
+    /// are marginally uniform over, and whether distinct nodes are independent.
+    fn claim(&self) -> Claim;
+
     /// Whether the implementation claims to be a nested uniform (Owen) scramble: every node
     /// permutation independent and uniform over S_b.
-    fn claims_nested_uniform(&self) -> bool;
+    fn claims_nested_uniform(&self) -> bool {
+        self.claim().is_owen()
+    }
 
     /// Whether `width`-bit words are supported (32 and 64 always; small widths for tests).
     fn supports_width(&self, width: Width) -> bool {
@@ -48,6 +54,15 @@ pub trait Scrambler: Send + Sync {
         self.scramble(x, Width::W64, dim)
     }
 
+    /// Scrambles `words` in place for dimension `dim`; equal to calling
+    /// [`Scrambler::scramble`] on each word (implementations override it where a batch pays:
+    /// one request for an external program, interleaved chains for table scramblers).
+    fn scramble_batch(&self, words: &mut [u64], width: Width, dim: u32) {
+        for w in words.iter_mut() {
+            *w = self.scramble(*w, width, dim);
+        }
+    }
+
     /// The scrambled value as f32, truncated (never 1.0).
     fn scramble_f32(&self, x: u64, width: Width, dim: u32) -> f32 {
         word_to_f32(self.scramble(x, width, dim), width)
@@ -71,8 +86,8 @@ impl Scrambler for Identity {
     fn base(&self) -> PowerOfTwoBase {
         PowerOfTwoBase::B2
     }
-    fn claims_nested_uniform(&self) -> bool {
-        false
+    fn claim(&self) -> Claim {
+        Claim::NESTED
     }
     #[inline]
     fn scramble(&self, x: u64, _width: Width, _dim: u32) -> u64 {

@@ -34,7 +34,8 @@ pub fn run(a: ListArgs) -> Result<ExitCode, CliError> {
             .map(|(spec, base, bytes)| {
                 serde_json::json!({
                     "name": spec.name, "base": base, "table_bytes": bytes,
-                    "claims_nested_uniform": spec.claims_nested_uniform, "summary": spec.summary,
+                    "claims_nested_uniform": spec.claim.is_owen(), "claim": spec.claim.to_string(),
+                    "summary": spec.summary,
                 })
             })
             .collect();
@@ -42,22 +43,18 @@ pub fn run(a: ListArgs) -> Result<ExitCode, CliError> {
     } else {
         writeln!(
             out,
-            "{:<22} {:>5} {:>12}  {:<14} summary",
-            "name", "base", "table_bytes", "nested_uniform"
+            "{:<22} {:>5} {:>12}  {:<24} summary",
+            "name", "base", "table_bytes", "claim"
         )
         .map_err(io_err)?;
         for (spec, base, bytes) in rows {
             writeln!(
                 out,
-                "{:<22} {:>5} {:>12}  {:<14} {}",
+                "{:<22} {:>5} {:>12}  {:<24} {}",
                 spec.name,
                 base,
                 bytes,
-                if spec.claims_nested_uniform {
-                    "yes"
-                } else {
-                    "no"
-                },
+                spec.claim.to_string(),
                 spec.summary
             )
             .map_err(io_err)?;

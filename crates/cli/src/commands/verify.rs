@@ -3,7 +3,7 @@
 use crate::CliError;
 use clap::{Args, ValueEnum};
 use gartowen::certificate::{fnv1a64, CertVerdict, Certificate, InputRecord};
-use gartowen::core::{PowerOfTwoBase, Width};
+use gartowen::core::{Claim, PowerOfTwoBase, Width};
 use gartowen::external::ExternalProcess;
 use gartowen::verify::{
     check_candidate, external_candidate, merge, verify_shard, ImplReport, Level, Shard, Verdict,
@@ -24,15 +24,31 @@ pub enum LevelArg {
     Exhaustive,
 }
 
-/// Run the conformance battery: inverse, nestedness (inspector), net preservation in the
-/// scrambling base, and the node-permutation law against uniform S_b (a verdict only for
-/// implementations that claim nested uniformity; a measured distance for the others).
+/// Run the conformance battery. Structure is checked exactly: inverse (injectivity for external
+/// programs), nestedness (inspector), net preservation in the scrambling base. Randomness is
+/// checked by laws over independent seeds:
+///   node-law    each node permutation uniform over the claimed group, depths 0..12 (marginal)
+///   pair-law    pairs of nodes (siblings, parent-child, cousins, distant) independent (joint)
+///   flip-rank   no exact GF(2) relation among node flips of depths ≤ D, dims 0-1 (joint)
+///   collisions  no two subtrees alike within one seed (joint; finite tables show here)
+///   pair-lemma  Owen's pair lemma for inputs first differing at digit r (marginal + joint)
+///   dimensions  dimensions 0..64 distinct (marginal) and root pairs independent (joint)
+///
+/// Each implementation is judged only on what it claims (`gartowen list` shows the claims;
+/// --claim overrides them): `nested`, `marginal:GROUP` (node permutations uniform over
+/// symmetric|affine|translation|cyclic), `independent:GROUP`, or `owen` (= independent:symmetric).
+/// Unclaimed checks are `measured`. The family-wise false-alarm rate of a run is 1e-3
+/// (Bonferroni over implementations and sub-tests); a pass reads "no deviation detected at this
+/// power", and each sub-test's power (smallest Cohen's w at power 0.9, or what an exact test
+/// detects) is in the JSON. The profile line shows, per family and depth 0, 1, 2, …, where an
+/// implementation departs from Owen: `.` nothing detected, `x` deviation, `-` not tested.
 ///
 /// Prints a table (implementation × check) and exits 1 if any check fails, 2 on bad usage.
 ///
 /// Examples:
 ///   gartowen verify --level quick
 ///   gartowen verify --impl art-owen-16p --impl lk-hash --json verify.json
+///   gartowen verify --impl digital-shift --impl lk-hash --claim owen     (imitations fail)
 ///   gartowen verify --level exhaustive --shard 2/4 --json shard2.json     (one CI job of four)
 ///   gartowen verify --merge shard1.json shard2.json shard3.json shard4.json --json all.json
 ///
@@ -76,9 +92,20 @@ pub struct VerifyArgs {
     /// Seconds to wait for each reply before the program is killed.
     #[arg(long, default_value_t = 10.0, requires = "external")]
     pub timeout: f64,
-    /// The external program does not claim nested uniformity: measure the node law, no verdict.
-    #[arg(long, requires = "external")]
+    /// The external program does not claim any law (same as --claim nested).
+    #[arg(long, requires = "external", conflicts_with = "claim")]
     pub no_uniform_claim: bool,
+    /// Judge on this claim instead of each implementation's own: nested | owen |
+    /// marginal[:GROUP] | independent:GROUP (GROUP: symmetric, affine, translation, cyclic).
+    /// External programs default to owen.
+    #[arg(long)]
+    pub claim: Option<String>,
+}
+
+fn parse_claim(text: &Option<String>) -> Result<Option<Claim>, CliError> {
+    text.as_deref()
+        .map(|t| Claim::parse(t).map_err(|e| CliError::Usage(format!("--claim {t}: {e}"))))
+        .transpose()
 }
 
 fn level_name(level: Level) -> &'static str {
@@ -182,17 +209,18 @@ fn run_external(a: &VerifyArgs, command: &str, level: Level) -> Result<ImplRepor
     }
     let process = ExternalProcess::spawn(command, base, width, Duration::from_secs_f64(a.timeout))
         .map_err(|e| CliError::Usage(e.to_string()))?;
+    let claim = if a.no_uniform_claim {
+        Claim::NESTED
+    } else {
+        parse_claim(&a.claim)?.unwrap_or(Claim::OWEN)
+    };
     let candidate = external_candidate(
         Arc::new(process),
         a.seed,
-        !a.no_uniform_claim,
+        claim,
         a.expect.as_deref().map(|n| (&registry, n)),
     );
-    Ok(check_candidate(
-        &candidate,
-        level,
-        usize::from(!a.no_uniform_claim),
-    ))
+    Ok(check_candidate(&candidate, level, 1))
 }
 
 /// The certificate's record of an external program: its command line and, where the program
@@ -245,7 +273,8 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
             indicatif::ProgressStyle::with_template("verify {msg} [{bar:30}] {pos}/{len}")
                 .expect("template"),
         );
-        let reports = verify_shard(&registry, &a.implementations, level, shard, &|name| {
+        let claim = parse_claim(&a.claim)?;
+        let reports = verify_shard(&registry, &a.implementations, level, shard, claim, &|name| {
             bar.set_message(name.to_string());
             bar.inc(1);
         })?;
@@ -253,49 +282,7 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
         let inputs = registry_inputs(&reports);
         (level, reports, inputs)
     };
-    // External programs have no inverse; their first column is the injectivity check.
-    let first = reports
-        .first()
-        .map_or("inverse".to_string(), |r| r.checks[0].check.clone());
-    println!(
-        "{:<26} {:<12} {:<12} {:<12} {:<13} node-law detail",
-        "implementation", first, "nested", "nets", "node-law"
-    );
-    for r in &reports {
-        let cell = |i: usize| {
-            format!(
-                "{:?} {:.0}ms",
-                r.checks[i].verdict,
-                r.checks[i].seconds * 1e3
-            )
-            .to_lowercase()
-        };
-        println!(
-            "{:<26} {:<12} {:<12} {:<12} {:<13} {}",
-            r.name,
-            cell(0),
-            cell(1),
-            cell(2),
-            cell(3),
-            r.checks[3].detail
-        );
-        for c in r.checks.iter().skip(4) {
-            println!(
-                "    {} {}: {}",
-                format!("{:?}", c.verdict).to_uppercase(),
-                c.check,
-                c.detail
-            );
-        }
-        for c in r
-            .checks
-            .iter()
-            .take(4)
-            .filter(|c| c.verdict == Verdict::Fail)
-        {
-            println!("    FAIL {}: {}", c.check, c.detail);
-        }
-    }
+    print_table(&reports);
     let failed = reports.iter().filter(|r| r.failed()).count();
     println!(
         "{} implementations, {failed} with failures ({} level)",
@@ -306,12 +293,14 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
         let mut parameters = serde_json::json!({
             "level": level,
             "node_law_seeds": gartowen::verify::node_law_seeds(level),
+            "family_alpha": gartowen::verify::stats::FAMILY_ALPHA,
+            "claim_override": a.claim,
         });
         if let Some(command) = &a.external {
             parameters["external"] = serde_json::json!({
                 "command": command, "base": a.base, "width": a.width, "seed": a.seed,
                 "expect": a.expect, "timeout_seconds": a.timeout,
-                "claims_nested_uniform": !a.no_uniform_claim,
+                "claim": reports[0].claim,
             });
         }
         let cert = Certificate::new(
@@ -336,4 +325,47 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
     } else {
         ExitCode::from(1)
     })
+}
+
+/// The verdict table: one row per implementation, one column per check, then the failures
+/// and the per-depth profile of the law checks.
+fn print_table(reports: &[ImplReport]) {
+    let Some(first) = reports.first() else {
+        return;
+    };
+    let names: Vec<&str> = first.checks.iter().map(|c| c.check.as_str()).collect();
+    let mut header = format!("{:<26} {:<22}", "implementation", "claim");
+    for n in &names {
+        header.push_str(&format!(" {n:<11}"));
+    }
+    println!("{}", header.trim_end());
+    for r in reports {
+        let mut row = format!("{:<26} {:<22}", r.name, r.claim);
+        for c in &r.checks {
+            let v = match c.verdict {
+                Verdict::Pass => "pass",
+                Verdict::Fail => "FAIL",
+                Verdict::Measured => "measured",
+                Verdict::Skipped => "skipped",
+            };
+            row.push_str(&format!(" {v:<11}"));
+        }
+        println!("{}", row.trim_end());
+        for c in r.checks.iter().filter(|c| c.verdict == Verdict::Fail) {
+            println!("    FAIL {}: {}", c.check, c.detail);
+        }
+        if !r.profile.is_empty() {
+            let cells: Vec<String> = r
+                .profile
+                .iter()
+                .map(|(family, row)| format!("{family} {row}"))
+                .collect();
+            println!("    profile (depth 0→): {}", cells.join("  "));
+        }
+    }
+    println!(
+        "law checks: family-wise α = {} (Bonferroni); pass = no deviation detected at the stated power; \
+         profile: . none detected, x deviation, - not tested",
+        gartowen::verify::stats::FAMILY_ALPHA
+    );
 }

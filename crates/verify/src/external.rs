@@ -30,7 +30,7 @@
 //! first failure. The child runs in its own process group, and the whole group is killed when
 //! the session ends, so nothing is left running.
 
-use crate::core::{PowerOfTwoBase, Scrambler, Width};
+use gartowen_core::{Claim, PowerOfTwoBase, Scrambler, Width};
 use std::fmt;
 use std::io::{Read, Write};
 use std::process::{Child, ChildStdin, Command, Stdio};
@@ -635,21 +635,21 @@ impl Drop for ExternalProcess {
 pub struct ExternalScrambler {
     process: Arc<ExternalProcess>,
     seed: u64,
-    claims_uniform: bool,
+    claim: Claim,
 }
 
 impl ExternalScrambler {
-    /// The scrambler with `seed` on `process`; `claims_uniform` is what the user says it is.
-    pub fn new(process: Arc<ExternalProcess>, seed: u64, claims_uniform: bool) -> Self {
+    /// The scrambler with `seed` on `process`; `claim` is what the user says it is.
+    pub fn new(process: Arc<ExternalProcess>, seed: u64, claim: Claim) -> Self {
         ExternalScrambler {
             process,
             seed,
-            claims_uniform,
+            claim,
         }
     }
 
     /// Scrambles a batch in one request.
-    pub fn scramble_batch(&self, words: &[u64], dim: u32) -> Result<Vec<u64>, ExternalError> {
+    pub fn request(&self, words: &[u64], dim: u32) -> Result<Vec<u64>, ExternalError> {
         self.process.scramble_batch(self.seed, dim, words)
     }
 }
@@ -661,21 +661,31 @@ impl Scrambler for ExternalScrambler {
     fn base(&self) -> PowerOfTwoBase {
         self.process.base
     }
-    fn claims_nested_uniform(&self) -> bool {
-        self.claims_uniform
+    fn claim(&self) -> Claim {
+        self.claim
     }
     fn supports_width(&self, width: Width) -> bool {
         width == self.process.width
     }
     fn scramble(&self, x: u64, _width: Width, dim: u32) -> u64 {
-        self.scramble_batch(&[x], dim)
+        self.request(&[x], dim)
             .map(|v| v[0])
             .unwrap_or_default()
+    }
+    /// One request per [`MAX_BATCH`] words; after a failure the words become 0 (the battery
+    /// reads [`ExternalProcess::failure`]).
+    fn scramble_batch(&self, words: &mut [u64], _width: Width, dim: u32) {
+        for chunk in words.chunks_mut(MAX_BATCH) {
+            match self.request(chunk, dim) {
+                Ok(out) => chunk.copy_from_slice(&out),
+                Err(_) => chunk.fill(0),
+            }
+        }
     }
     /// The protocol has no inverse; verify checks injectivity instead. This search inverts a
     /// nested scramble digit by digit (b requests per digit) and is only right for nested ones.
     fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
-        let layout = crate::core::DigitLayout::new(width, self.process.base);
+        let layout = gartowen_core::DigitLayout::new(width, self.process.base);
         let mut x = 0u64;
         for k in 0..layout.num_digits() {
             let want = layout.get(y, k);

@@ -7,21 +7,21 @@
 //! * `nested`: the inspector, exhaustive at 16 bits (probes at 32 bits where 16 is unsupported);
 //! * `nets`: Sobol (base 2), sz4 (base 4) or sz16 (base 16) scrambled in its own base keeps the
 //!   t-value the rank path gives for the unscrambled matrices, for every m up to a level bound;
-//! * `node-law`: over independent seeds, the permutation of one node (dimension 0, depth 2,
-//!   prefix one) against uniform S_b: χ² against the α = 1e-3 critical value, Bonferroni over
-//!   the implementations that claim nested uniformity; total variation; and the affine fraction,
-//!   the share of nodes with π(3) = π(0)⊕π(1)⊕π(2), which is 1 for affine families and 1/(b−3)
-//!   for uniform S_b. A verdict is given only to implementations that claim nested uniformity.
+//! * the laws ([`crate::laws`]): `node-law` (marginal, by depth), `pair-law`, `flip-rank`,
+//!   `collisions` (joint), `pair-lemma` and `dimensions`. Each sub-test states what it requires
+//!   (a marginal law or independence), its p-value, and its power; a check gets a verdict only
+//!   when the implementation claims what it tests, and is `measured` otherwise. The family-wise
+//!   level of a run is [`FAMILY_ALPHA`] = 10^-3, split evenly (Bonferroni) over the
+//!   implementations judged and their judged sub-tests.
 
-use crate::core::{
-    BuildContext, CoreError, DigitLayout, Permutation, PowerOfTwoBase, Registry, Scrambler,
-    SplitMix64, Width,
-};
-use crate::netcheck::{counting::t_value, rank, CheckBase, PointSet};
-use crate::oracles::inspector::{inspect_exhaustive, inspect_probes, NodeLaw};
-use crate::seq::SequenceKind;
+use crate::law::SubTest;
+use crate::sampling::SeedBuilder;
+use crate::stats::{min_detectable_w, FAMILY_ALPHA};
+use gartowen_core::{BuildContext, Claim, CoreError, PowerOfTwoBase, Registry, Scrambler, SplitMix64, Width};
+use gartowen_netcheck::{counting::t_value, rank, CheckBase, PointSet};
+use gartowen_oracles::inspector::{inspect_exhaustive, inspect_probes};
+use gartowen_seq::SequenceKind;
 use serde::Serialize;
-use statrs::distribution::{ChiSquared, ContinuousCDF};
 use std::time::Instant;
 
 /// How much to run.
@@ -59,10 +59,19 @@ pub struct CheckResult {
     pub verdict: Verdict,
     /// What was found, in words (the failing node or box, the measured distance).
     pub detail: String,
-    /// The measured value where there is one (χ² for node-law).
+    /// The measured value where there is one (the worst sub-test's statistic for the laws).
     pub value: Option<f64>,
     /// Wall time.
     pub seconds: f64,
+    /// The smallest p-value of the sub-tests (laws only).
+    #[serde(default)]
+    pub p_value: Option<f64>,
+    /// The per-sub-test level the p-values were compared with (laws only).
+    #[serde(default)]
+    pub alpha: Option<f64>,
+    /// The sub-tests (laws only), each with its statistic, p-value and power.
+    #[serde(default)]
+    pub tests: Vec<SubTest>,
 }
 
 /// All checks of one implementation.
@@ -76,8 +85,15 @@ pub struct ImplReport {
     pub base: u32,
     /// Whether it claims nested uniformity.
     pub claims_nested_uniform: bool,
+    /// What it claims (`nested`, `marginal:GROUP`, `independent:GROUP`, `owen`).
+    #[serde(default)]
+    pub claim: String,
     /// The checks.
     pub checks: Vec<CheckResult>,
+    /// Per law family, one character per depth 0, 1, …: `.` no deviation detected, `x` a
+    /// deviation at the per-test level, `-` not tested (the "how close to Owen" profile).
+    #[serde(default)]
+    pub profile: Vec<(String, String)>,
 }
 
 impl ImplReport {
@@ -96,6 +112,9 @@ fn timed(check: &str, f: impl FnOnce() -> (Verdict, String, Option<f64>)) -> Che
         detail,
         value,
         seconds: t.elapsed().as_secs_f64(),
+        p_value: None,
+        alpha: None,
+        tests: Vec::new(),
     }
 }
 
@@ -286,60 +305,6 @@ fn check_nets(s: &dyn Scrambler, level: Level) -> (Verdict, String, Option<f64>)
     )
 }
 
-/// The node-law statistics over `seeds` instances built by `with_seed`:
-/// (χ², dof, total variation, affine fraction).
-fn node_law(
-    with_seed: &SeedBuilder,
-    base: PowerOfTwoBase,
-    seeds: u64,
-) -> Result<(f64, usize, f64, Option<f64>), String> {
-    let b = base.base();
-    let cells = match b {
-        2..=4 => (1..=b as usize).product::<usize>(),
-        8 | 16 => (b * (b - 1)) as usize,
-        _ => b as usize,
-    };
-    let mut counts = vec![0u64; cells];
-    let mut affine = 0u64;
-    for seed in 0..seeds {
-        let s = with_seed(seed)?;
-        let width = working_width(s.as_ref());
-        let layout = DigitLayout::new(width, base);
-        let prefix = layout.set(0, 1, 1);
-        let images: Vec<u8> = (0..b)
-            .map(|d| layout.get(s.scramble(layout.set(prefix, 2, d), width, 0), 2) as u8)
-            .collect();
-        let Ok(p) = Permutation::from_images(&images) else {
-            continue;
-        };
-        counts[if b <= 16 {
-            NodeLaw::cell(&p)
-        } else {
-            p.apply(0) as usize
-        }] += 1;
-        if b >= 8 {
-            affine += (p.apply(3) == p.apply(0) ^ p.apply(1) ^ p.apply(2)) as u64;
-        }
-    }
-    let total: u64 = counts.iter().sum();
-    if total == 0 {
-        return Err("no node permutation was a bijection".into());
-    }
-    let e = total as f64 / cells as f64;
-    let chi2 = counts.iter().map(|&c| (c as f64 - e).powi(2) / e).sum();
-    let tv = 0.5
-        * counts
-            .iter()
-            .map(|&c| (c as f64 / total as f64 - 1.0 / cells as f64).abs())
-            .sum::<f64>();
-    Ok((
-        chi2,
-        cells - 1,
-        tv,
-        (b >= 8).then(|| affine as f64 / total as f64),
-    ))
-}
-
 /// Which part of the list to run: shard `index` (1-based) of `count`; implementation k goes to
 /// shard (k mod count) + 1, so shards are deterministic and disjoint.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -386,9 +351,6 @@ pub fn merge(parts: Vec<Vec<ImplReport>>) -> Result<Vec<ImplReport>, String> {
     Ok(all)
 }
 
-/// Builds the instance of an implementation for one seed.
-pub type SeedBuilder<'a> = dyn Fn(u64) -> Result<Box<dyn Scrambler + 'a>, String> + 'a;
-
 /// One implementation as the battery sees it, however it is reached (registry or external).
 pub struct Candidate<'a> {
     /// Position in the list being verified.
@@ -406,6 +368,8 @@ pub struct Candidate<'a> {
     pub health: Box<dyn Fn() -> Option<String> + 'a>,
     /// A built-in twin the implementation must agree with bit for bit (`--expect`).
     pub twin: Option<(String, Box<SeedBuilder<'a>>)>,
+    /// What the implementation is judged on (its own claim unless overridden).
+    pub claim: Claim,
 }
 
 /// Bit-exact agreement with the twin on seeds 0..4, dimensions 0..8 and 512 words each
@@ -469,18 +433,18 @@ fn check_twin(
     )
 }
 
-/// The number of independent instances (seeds 0, 1, …) the node law draws at `level`.
+/// The number of independent instances (seeds 0, 1, …) the per-seed laws draw at `level`.
 pub fn node_law_seeds(level: Level) -> u64 {
     match level {
         Level::Quick => 2000,
-        Level::Full => 20_000,
+        Level::Full => 10_000,
         Level::Exhaustive => 50_000,
     }
 }
 
 /// Every fixed seed the battery uses: the main instance's seed, then the seeds of the inverse
-/// sample, the inspector's probes and the twin comparison. Node-law instances use seeds
-/// 0..[`node_law_seeds`].
+/// sample, the inspector's probes and the twin comparison. Law instances use seeds
+/// 0..[`node_law_seeds`] (and fewer for flip-rank, collisions and dimensions).
 pub fn seeds_used(main_seed: u64) -> Vec<u64> {
     vec![main_seed, INVERSE_SEED, PROBE_SEED, TWIN_SEED]
 }
@@ -489,16 +453,13 @@ const INVERSE_SEED: u64 = 0x1234;
 const PROBE_SEED: u64 = 1;
 const TWIN_SEED: u64 = 0xE8EC7;
 
-/// Runs every check on one candidate; `claimants` is the number of implementations in the
-/// whole run that claim nested uniformity (the node-law test's Bonferroni divisor).
-pub fn check_candidate(c: &Candidate, level: Level, claimants: usize) -> ImplReport {
-    let seeds = node_law_seeds(level);
+/// Runs every check on one candidate; `judged` is the number of implementations in the whole
+/// run whose claims get law verdicts (the Bonferroni divisor of [`FAMILY_ALPHA`]).
+pub fn check_candidate(c: &Candidate, level: Level, judged: usize) -> ImplReport {
     let probe = c.probe.as_ref();
     let base = probe.base();
-    let claims = probe.claims_nested_uniform();
     // A transport failure turns the check that met it into a failure naming it.
-    let guarded = |check: &str, f: &dyn Fn() -> (Verdict, String, Option<f64>)| {
-        let mut r = timed(check, f);
+    let guard = |mut r: CheckResult| {
         if let Some(e) = (c.health)() {
             r.verdict = Verdict::Fail;
             r.detail = format!("external program failed: {e}");
@@ -506,6 +467,7 @@ pub fn check_candidate(c: &Candidate, level: Level, claimants: usize) -> ImplRep
         }
         r
     };
+    let guarded = |check: &str, f: &dyn Fn() -> (Verdict, String, Option<f64>)| guard(timed(check, f));
     let mut checks = vec![
         if c.invertible {
             guarded("inverse", &|| check_inverse(probe, level))
@@ -515,46 +477,160 @@ pub fn check_candidate(c: &Candidate, level: Level, claimants: usize) -> ImplRep
         guarded("nested", &|| check_nested(probe)),
         guarded("nets", &|| check_nets(probe, level)),
     ];
-    checks.push(guarded("node-law", &|| {
-        let (chi2, dof, tv, affine) = match node_law(c.with_seed.as_ref(), base, seeds) {
-            Ok(law) => law,
-            Err(e) => {
-                return (
-                    Verdict::Fail,
-                    format!("could not build per-seed instances: {e}"),
-                    None,
-                )
-            }
-        };
-        let critical = ChiSquared::new(dof as f64)
-            .expect("dof ≥ 1")
-            .inverse_cdf(1.0 - 1e-3 / claimants.max(1) as f64);
-        let looks_affine = affine.is_some_and(|a| a > 0.5);
-        let detail = format!(
-            "chi-square {chi2:.1} (critical {critical:.1}, {dof} dof), TV {tv:.3}{}",
-            affine.map_or(String::new(), |a| format!(", affine fraction {a:.3}"))
-        );
-        let verdict = if !claims {
-            Verdict::Measured
-        } else if chi2 < critical && !looks_affine {
-            Verdict::Pass
-        } else {
-            Verdict::Fail
-        };
-        (verdict, detail, Some(chi2))
-    }));
+    let started = Instant::now();
+    match crate::laws::run_laws(c, level, 0) {
+        Ok(families) => {
+            let seconds = started.elapsed().as_secs_f64() / families.len().max(1) as f64;
+            checks.extend(
+                judge_families(families, c.claim, judged, seconds)
+                    .into_iter()
+                    .map(guard),
+            );
+        }
+        Err(e) => checks.push(guard(CheckResult {
+            check: "laws".into(),
+            verdict: Verdict::Fail,
+            detail: format!("could not build per-seed instances: {e}"),
+            value: None,
+            seconds: started.elapsed().as_secs_f64(),
+            p_value: None,
+            alpha: None,
+            tests: Vec::new(),
+        })),
+    }
     if let Some((twin_name, twin)) = &c.twin {
         checks.push(guarded("expect", &|| {
             check_twin(c, twin_name, twin.as_ref(), level)
         }));
     }
+    let profile = profile(&checks);
     ImplReport {
         index: c.index,
         name: c.name.clone(),
         base: base.base(),
-        claims_nested_uniform: claims,
+        claims_nested_uniform: c.claim.is_owen(),
+        claim: c.claim.to_string(),
         checks,
+        profile,
     }
+}
+
+/// Turns each law family's sub-tests into a check: the per-test level is
+/// [`FAMILY_ALPHA`] / (judged implementations × judged sub-tests), and a family gets a verdict
+/// only if the claim covers every sub-test that deviates (others are measured).
+pub fn judge_families(
+    families: Vec<(&'static str, Vec<SubTest>)>,
+    claim: Claim,
+    judged: usize,
+    seconds: f64,
+) -> Vec<CheckResult> {
+    let claimed_tests: usize = families
+        .iter()
+        .flat_map(|(_, t)| t.iter())
+        .filter(|t| t.requires.claimed_by(claim))
+        .count();
+    let all_tests: usize = families.iter().map(|(_, t)| t.len()).sum();
+    let alpha = FAMILY_ALPHA / (judged.max(1) * claimed_tests.max(1)) as f64;
+    // Measured-only sub-tests are flagged at the level they would have had if claimed.
+    let measure_alpha = FAMILY_ALPHA / (judged.max(1) * all_tests.max(1)) as f64;
+    families
+        .into_iter()
+        .map(|(family, mut tests)| {
+            let mut judged_fail = false;
+            let mut any_claimed = false;
+            for t in &mut tests {
+                let claimed = t.requires.claimed_by(claim);
+                any_claimed |= claimed;
+                let a = if claimed { alpha } else { measure_alpha };
+                t.deviates = t.p_value < a;
+                judged_fail |= claimed && t.deviates;
+                if let Some(dof) = t.dof {
+                    t.power = format!(
+                        "χ² {dof} dof, n = {}: detects Cohen's w ≥ {:.3} at power 0.9",
+                        t.n,
+                        min_detectable_w(dof, t.n, a)
+                    );
+                }
+            }
+            let worst = tests
+                .iter()
+                .min_by(|a, b| a.p_value.total_cmp(&b.p_value))
+                .cloned();
+            let deviations = tests.iter().filter(|t| t.deviates).count();
+            let verdict = if !any_claimed {
+                Verdict::Measured
+            } else if judged_fail {
+                Verdict::Fail
+            } else {
+                Verdict::Pass
+            };
+            let detail = match &worst {
+                None => "not applicable".to_string(),
+                Some(w) => format!(
+                    "{}: {} of {} sub-tests deviate at α' = {:.1e}; worst: {} (p = {:.2e}; {})",
+                    if verdict == Verdict::Pass {
+                        "no deviation detected at this power"
+                    } else if verdict == Verdict::Fail {
+                        "deviation"
+                    } else {
+                        "not claimed, measured"
+                    },
+                    deviations,
+                    tests.len(),
+                    if any_claimed { alpha } else { measure_alpha },
+                    w.name,
+                    w.p_value,
+                    w.power
+                ),
+            };
+            CheckResult {
+                check: family.into(),
+                verdict: if tests.is_empty() {
+                    Verdict::Skipped
+                } else {
+                    verdict
+                },
+                detail,
+                value: worst.as_ref().map(|w| w.statistic),
+                seconds,
+                p_value: worst.as_ref().map(|w| w.p_value),
+                alpha: Some(if any_claimed { alpha } else { measure_alpha }),
+                tests,
+            }
+        })
+        .collect()
+}
+
+/// The per-depth profile of the law checks: one string per family, a character per depth.
+pub fn profile(checks: &[CheckResult]) -> Vec<(String, String)> {
+    let depth_max = checks
+        .iter()
+        .flat_map(|c| c.tests.iter())
+        .filter_map(|t| t.depth)
+        .max();
+    let Some(depth_max) = depth_max else {
+        return Vec::new();
+    };
+    checks
+        .iter()
+        .filter(|c| !c.tests.is_empty())
+        .map(|c| {
+            let row: String = (0..=depth_max)
+                .map(|d| {
+                    let at: Vec<&SubTest> =
+                        c.tests.iter().filter(|t| t.depth == Some(d)).collect();
+                    if at.is_empty() {
+                        '-'
+                    } else if at.iter().any(|t| t.deviates) {
+                        'x'
+                    } else {
+                        '.'
+                    }
+                })
+                .collect();
+            (c.check.clone(), row)
+        })
+        .collect()
 }
 
 /// Instances of registry entry `request` for any seed, in `base` unless the request names one.
@@ -587,6 +663,7 @@ pub fn registry_candidate<'a>(
     Ok(Candidate {
         index,
         name: probe.name(),
+        claim: probe.claim(),
         probe,
         with_seed: registry_seeds(registry, request, base),
         invertible: true,
@@ -601,15 +678,17 @@ pub fn verify(
     names: &[String],
     level: Level,
 ) -> Result<Vec<ImplReport>, CoreError> {
-    verify_shard(registry, names, level, Shard::ALL, &|_| {})
+    verify_shard(registry, names, level, Shard::ALL, None, &|_| {})
 }
 
-/// [`verify`] restricted to one shard, calling `progress` after each implementation.
+/// [`verify`] restricted to one shard, judging every implementation on `claim` when given
+/// (else on its own claim), calling `progress` after each implementation.
 pub fn verify_shard(
     registry: &Registry,
     names: &[String],
     level: Level,
     shard: Shard,
+    claim: Option<Claim>,
     progress: &dyn Fn(&str),
 ) -> Result<Vec<ImplReport>, CoreError> {
     let names: Vec<String> = if names.is_empty() {
@@ -621,15 +700,18 @@ pub fn verify_shard(
     } else {
         names.to_vec()
     };
-    let claimants = names
+    let judged = names
         .iter()
         .filter_map(|n| registry.build(n, 0).ok())
-        .filter(|s| s.claims_nested_uniform())
+        .filter(|s| claim.unwrap_or_else(|| s.claim()).marginal.is_some())
         .count();
     let mut out = Vec::new();
     for (index, name) in names.iter().enumerate().filter(|(k, _)| shard.contains(*k)) {
-        let candidate = registry_candidate(registry, name, index)?;
-        out.push(check_candidate(&candidate, level, claimants));
+        let mut candidate = registry_candidate(registry, name, index)?;
+        if let Some(c) = claim {
+            candidate.claim = c;
+        }
+        out.push(check_candidate(&candidate, level, judged));
         progress(name);
     }
     Ok(out)
@@ -640,7 +722,7 @@ pub fn verify_shard(
 pub fn external_candidate<'a>(
     process: std::sync::Arc<crate::external::ExternalProcess>,
     seed: u64,
-    claims_uniform: bool,
+    claim: Claim,
     twin: Option<(&'a Registry, &'a str)>,
 ) -> Candidate<'a> {
     use crate::external::ExternalScrambler;
@@ -650,13 +732,10 @@ pub fn external_candidate<'a>(
     Candidate {
         index: 0,
         name: format!("external:{}", process.command()),
-        probe: Box::new(ExternalScrambler::new(process, seed, claims_uniform)),
+        claim,
+        probe: Box::new(ExternalScrambler::new(process, seed, claim)),
         with_seed: Box::new(move |s| {
-            Ok(Box::new(ExternalScrambler::new(
-                for_seed.clone(),
-                s,
-                claims_uniform,
-            )))
+            Ok(Box::new(ExternalScrambler::new(for_seed.clone(), s, claim)))
         }),
         invertible: false,
         health: Box::new(move || watched.failure().map(|e| e.to_string())),

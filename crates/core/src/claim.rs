@@ -1,0 +1,260 @@
+//! What a scrambler promises about its law, so that the verify battery judges each
+//! implementation only on what it claims (and measures the rest).
+//!
+//! Every scrambler claims to be *nested* (a bijection that maps b-adic intervals of each level
+//! onto intervals of the same level). On top of that it may claim:
+//! * **marginal** uniformity: every node permutation, on its own, is uniform over a group `G`
+//!   of digit permutations ([`NodeGroup`]: all of S_b, the affine group AGL(q,2), the XOR
+//!   translations, or the cyclic shifts);
+//! * **independence**: the node permutations of distinct nodes (across depths and dimensions)
+//!   are independent. Marginal uniformity over S_b plus independence is Owen's nested uniform
+//!   scrambling ([`Claim::OWEN`]).
+
+use crate::CoreError;
+use std::fmt;
+
+/// A group of permutations of the b = 2^q digits that a node permutation may be uniform over.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum NodeGroup {
+    /// All of S_b (b! permutations).
+    Symmetric,
+    /// d ↦ A·d ⊕ u with A ∈ GL(q,2): AGL(q,2), equal to S_b for q ≤ 2.
+    Affine,
+    /// d ↦ d ⊕ u: the b translations (a nested digital shift node).
+    Translation,
+    /// d ↦ d + u mod b: the b cyclic shifts.
+    Cyclic,
+}
+
+impl NodeGroup {
+    /// Every group, largest first.
+    pub const ALL: [NodeGroup; 4] = [
+        NodeGroup::Symmetric,
+        NodeGroup::Affine,
+        NodeGroup::Translation,
+        NodeGroup::Cyclic,
+    ];
+
+    /// Lower-case name (`symmetric`, `affine`, `translation`, `cyclic`).
+    pub fn name(self) -> &'static str {
+        match self {
+            NodeGroup::Symmetric => "symmetric",
+            NodeGroup::Affine => "affine",
+            NodeGroup::Translation => "translation",
+            NodeGroup::Cyclic => "cyclic",
+        }
+    }
+
+    /// The group's usual symbol for base 2^q (`S_16`, `AGL(3,2)`, …).
+    pub fn symbol(self, q: u32) -> String {
+        let b = 1u32 << q;
+        match self {
+            NodeGroup::Symmetric => format!("S_{b}"),
+            NodeGroup::Affine => format!("AGL({q},2)"),
+            NodeGroup::Translation => format!("XOR translations of {b} digits"),
+            NodeGroup::Cyclic => format!("Z_{b} shifts"),
+        }
+    }
+
+    /// log2 of the group's order in base 2^q: log2(b!), log2(b·|GL(q,2)|), or q.
+    ///
+    /// ```
+    /// use gartowen_core::NodeGroup;
+    /// assert!((NodeGroup::Symmetric.log2_order(2) - 24f64.log2()).abs() < 1e-12);
+    /// assert!((NodeGroup::Affine.log2_order(3) - 1344f64.log2()).abs() < 1e-12);
+    /// assert_eq!(NodeGroup::Translation.log2_order(4), 4.0);
+    /// ```
+    pub fn log2_order(self, q: u32) -> f64 {
+        let b = 1u64 << q;
+        match self {
+            NodeGroup::Symmetric => (2..=b).map(|k| (k as f64).log2()).sum(),
+            // |GL(q,2)| = Π_{i<q} (2^q − 2^i).
+            NodeGroup::Affine => {
+                q as f64 + (0..q).map(|i| ((b - (1u64 << i)) as f64).log2()).sum::<f64>()
+            }
+            NodeGroup::Translation | NodeGroup::Cyclic => q as f64,
+        }
+    }
+
+    /// Whether the permutation with `images` (images[d] = π(d), all b of them) is in the group.
+    ///
+    /// ```
+    /// use gartowen_core::NodeGroup;
+    /// assert!(NodeGroup::Translation.contains(&[2, 3, 0, 1]));
+    /// assert!(!NodeGroup::Translation.contains(&[1, 2, 3, 0]));
+    /// assert!(NodeGroup::Cyclic.contains(&[1, 2, 3, 0]));
+    /// assert!(NodeGroup::Affine.contains(&[1, 2, 3, 0])); // S_4 = AGL(2,2)
+    /// ```
+    pub fn contains(self, images: &[u32]) -> bool {
+        let b = images.len() as u32;
+        if b == 0 || !b.is_power_of_two() {
+            return false;
+        }
+        let mut seen = vec![false; b as usize];
+        for &y in images {
+            if y >= b || std::mem::replace(&mut seen[y as usize], true) {
+                return false;
+            }
+        }
+        let t = images[0];
+        match self {
+            NodeGroup::Symmetric => true,
+            NodeGroup::Translation => (0..b).all(|d| images[d as usize] == d ^ t),
+            NodeGroup::Cyclic => (0..b).all(|d| images[d as usize] == (d + t) % b),
+            // π ⊕ π(0) must be linear: additive on every pair.
+            NodeGroup::Affine => (0..b).all(|x| {
+                (0..b).all(|y| {
+                    images[(x ^ y) as usize] ^ t
+                        == (images[x as usize] ^ t) ^ (images[y as usize] ^ t)
+                })
+            }),
+        }
+    }
+
+    /// Parses a group name as written by [`NodeGroup::name`].
+    pub fn parse(text: &str) -> Option<NodeGroup> {
+        NodeGroup::ALL.into_iter().find(|g| g.name() == text)
+    }
+}
+
+/// What a scrambler promises beyond nestedness (always claimed).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Claim {
+    /// Each node permutation is marginally uniform over this group (None: no law claimed).
+    pub marginal: Option<NodeGroup>,
+    /// Node permutations of distinct nodes, depths and dimensions are independent.
+    pub independent: bool,
+}
+
+impl Claim {
+    /// Nested only: a bijection that respects the b-adic tree, with no law claimed.
+    pub const NESTED: Claim = Claim {
+        marginal: None,
+        independent: false,
+    };
+    /// Owen's nested uniform scrambling: independent node permutations uniform over S_b.
+    pub const OWEN: Claim = Claim {
+        marginal: Some(NodeGroup::Symmetric),
+        independent: true,
+    };
+
+    /// Marginally uniform over `group`, with no independence claimed (the ART family).
+    pub const fn marginal(group: NodeGroup) -> Claim {
+        Claim {
+            marginal: Some(group),
+            independent: false,
+        }
+    }
+
+    /// Independent node permutations, each uniform over `group` (the oracle's variants).
+    pub const fn independent_over(group: NodeGroup) -> Claim {
+        Claim {
+            marginal: Some(group),
+            independent: true,
+        }
+    }
+
+    /// Whether this is exactly Owen's claim (independent and uniform over S_b).
+    pub fn is_owen(&self) -> bool {
+        *self == Claim::OWEN
+    }
+
+    /// Parses `nested`, `marginal[:GROUP]`, `owen` or `independent:GROUP` (GROUP one of
+    /// symmetric, affine, translation, cyclic; `marginal` alone means symmetric).
+    ///
+    /// ```
+    /// use gartowen_core::{Claim, NodeGroup};
+    /// assert_eq!(Claim::parse("owen").unwrap(), Claim::OWEN);
+    /// assert_eq!(Claim::parse("marginal:affine").unwrap(), Claim::marginal(NodeGroup::Affine));
+    /// assert!(Claim::parse("uniformish").is_err());
+    /// ```
+    pub fn parse(text: &str) -> Result<Claim, CoreError> {
+        let bad = || CoreError::InvalidOption {
+            scrambler: "claim".into(),
+            option: text.into(),
+            reason: "expected nested, owen, marginal[:GROUP] or independent:GROUP \
+                     (GROUP: symmetric, affine, translation, cyclic)"
+                .into(),
+        };
+        let (head, group) = match text.split_once(':') {
+            Some((h, g)) => (h, Some(NodeGroup::parse(g).ok_or_else(bad)?)),
+            None => (text, None),
+        };
+        match (head, group) {
+            ("nested", None) => Ok(Claim::NESTED),
+            ("owen", None) => Ok(Claim::OWEN),
+            ("marginal", g) => Ok(Claim::marginal(g.unwrap_or(NodeGroup::Symmetric))),
+            ("independent", Some(g)) => Ok(Claim::independent_over(g)),
+            _ => Err(bad()),
+        }
+    }
+}
+
+impl fmt::Display for Claim {
+    /// The form [`Claim::parse`] reads back.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match (self.marginal, self.independent) {
+            (None, _) => write!(f, "nested"),
+            (Some(NodeGroup::Symmetric), true) => write!(f, "owen"),
+            (Some(g), true) => write!(f, "independent:{}", g.name()),
+            (Some(g), false) => write!(f, "marginal:{}", g.name()),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn display_round_trips_through_parse() {
+        for g in NodeGroup::ALL {
+            for c in [Claim::marginal(g), Claim::independent_over(g)] {
+                assert_eq!(Claim::parse(&c.to_string()).unwrap(), c);
+            }
+        }
+        assert_eq!(Claim::parse("nested").unwrap().to_string(), "nested");
+    }
+
+    #[test]
+    fn group_membership_counts_match_group_orders() {
+        // Every map of 4 digits: the members of each group are exactly its order.
+        let mut count = [0usize; 4];
+        let items = [0u32, 1, 2, 3];
+        for a in items {
+            for b in items {
+                for c in items {
+                    for d in items {
+                        let p = [a, b, c, d];
+                        for (i, g) in NodeGroup::ALL.into_iter().enumerate() {
+                            count[i] += g.contains(&p) as usize;
+                        }
+                    }
+                }
+            }
+        }
+        assert_eq!(count, [24, 24, 4, 4]);
+        // In base 8, AGL(3,2) has 1344 elements: count over all 8! permutations is costly, so
+        // check the order formula against the product instead.
+        assert_eq!(NodeGroup::Affine.log2_order(3).exp2().round() as u64, 1344);
+        assert_eq!(NodeGroup::Symmetric.log2_order(3).exp2().round() as u64, 40320);
+    }
+
+    #[test]
+    fn affine_membership_rejects_a_non_affine_permutation_of_eight() {
+        let identity: Vec<u32> = (0..8).collect();
+        assert!(NodeGroup::Affine.contains(&identity));
+        // Swapping bits 0 and 1 of every digit is linear.
+        let swapped: Vec<u32> = (0..8u32)
+            .map(|d| (d & 4) | ((d & 1) << 1) | ((d >> 1) & 1))
+            .collect();
+        assert!(NodeGroup::Affine.contains(&swapped));
+        let mut lone_swap = identity.clone();
+        lone_swap.swap(1, 2); // only two images swapped: 1 ⊕ 4 = 5 would have to map to 6
+        assert!(!NodeGroup::Affine.contains(&lone_swap));
+        let mut broken = identity;
+        broken.swap(3, 4); // 3 = e0 ⊕ e1 now maps to 4: not additive.
+        assert!(!NodeGroup::Affine.contains(&broken));
+        assert!(!NodeGroup::Symmetric.contains(&[0, 0, 1, 2]));
+    }
+}

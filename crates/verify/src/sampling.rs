@@ -1,0 +1,150 @@
+//! How the law tests see a scrambler: as a black box evaluated on fixed words for many
+//! independent seeds. A test plans [`Probe`]s (a dimension, the words, and how many seeds need
+//! them); [`evaluate`] builds each seed's instance once, sends every probe of one dimension in
+//! one [`Scrambler::scramble_batch`] call (one request for an external program), and returns the
+//! outputs in seed order, whatever the thread count.
+//!
+//! Node words: the node (depth k, prefix p) of a base-2^q tree is reached by the word whose
+//! first k digits are p; its permutation's image of digit d is digit k of the scramble of the
+//! word (p, d, 0, 0, …), for any nested scramble.
+
+use gartowen_core::{DigitLayout, Scrambler, SplitMix64, Width};
+use rayon::prelude::*;
+
+/// Builds the instance of an implementation for one seed.
+pub type SeedBuilder<'a> = dyn Fn(u64) -> Result<Box<dyn Scrambler + 'a>, String> + Send + Sync + 'a;
+
+/// Words to scramble in one dimension for the first `seeds` seeds.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Probe {
+    /// The dimension.
+    pub dim: u32,
+    /// The input words.
+    pub words: Vec<u64>,
+    /// Evaluated for seeds `0..seeds` of the run only.
+    pub seeds: u64,
+}
+
+/// Outputs of a run: `[seed][probe]` holds the scrambled words (empty when the probe was not
+/// evaluated for that seed).
+pub type Outputs = Vec<Vec<Vec<u64>>>;
+
+/// Scrambles every probe for seeds `seed_base + i`, i in `0..max(probe.seeds)`.
+pub fn evaluate(
+    with_seed: &SeedBuilder,
+    width: Width,
+    seed_base: u64,
+    probes: &[Probe],
+) -> Result<Outputs, String> {
+    let seeds = probes.iter().map(|p| p.seeds).max().unwrap_or(0);
+    let mut dims: Vec<u32> = probes.iter().map(|p| p.dim).collect();
+    dims.sort_unstable();
+    dims.dedup();
+    (0..seeds)
+        .into_par_iter()
+        .map(|i| {
+            let s = with_seed(seed_base.wrapping_add(i))?;
+            let mut out = vec![Vec::new(); probes.len()];
+            for &dim in &dims {
+                let active: Vec<usize> = (0..probes.len())
+                    .filter(|&k| probes[k].dim == dim && i < probes[k].seeds)
+                    .collect();
+                let mut batch: Vec<u64> = active
+                    .iter()
+                    .flat_map(|&k| probes[k].words.iter().copied())
+                    .collect();
+                s.scramble_batch(&mut batch, width, dim);
+                let mut at = 0;
+                for &k in &active {
+                    let n = probes[k].words.len();
+                    out[k] = batch[at..at + n].to_vec();
+                    at += n;
+                }
+            }
+            Ok(out)
+        })
+        .collect()
+}
+
+/// Node addressing in one layout: words for nodes and digits of outputs.
+#[derive(Debug, Clone, Copy)]
+pub struct Tree {
+    /// The digit layout (width and base).
+    pub layout: DigitLayout,
+}
+
+impl Tree {
+    /// The tree of `width`-bit words in `base`.
+    pub fn new(layout: DigitLayout) -> Self {
+        Tree { layout }
+    }
+
+    /// Digits per full digit (q).
+    pub fn q(&self) -> u32 {
+        self.layout.base().q()
+    }
+
+    /// The base b.
+    pub fn b(&self) -> u32 {
+        self.layout.base().base()
+    }
+
+    /// Full (q-bit) digits in a word.
+    pub fn full_digits(&self) -> u32 {
+        self.layout.full_digits()
+    }
+
+    /// The word with digits `prefix` (most significant first), then `d` at position
+    /// `prefix.len()` (when the word has that digit; d must then be 0 otherwise), then zeros.
+    pub fn word(&self, prefix: &[u32], d: u32) -> u64 {
+        let mut x = 0u64;
+        for (k, &p) in prefix.iter().enumerate() {
+            x = self.layout.set(x, k as u32, p);
+        }
+        let at = prefix.len() as u32;
+        if at < self.layout.num_digits() {
+            x = self.layout.set(x, at, d);
+        } else {
+            debug_assert_eq!(d, 0, "no digit {at} to hold {d}");
+        }
+        x
+    }
+
+    /// Digit `k` of `y`.
+    pub fn digit(&self, y: u64, k: u32) -> u32 {
+        self.layout.get(y, k)
+    }
+
+    /// A pseudo-random prefix of `depth` full digits.
+    pub fn random_prefix(&self, depth: u32, rng: &mut SplitMix64) -> Vec<u32> {
+        (0..depth).map(|_| rng.bounded(self.b())).collect()
+    }
+}
+
+/// Folds a digit to at most 16 values (its low 4 bits): keeps χ² tables at ≤ 256 cells.
+#[inline]
+pub fn fold(d: u32, b: u32) -> u32 {
+    if b > 16 {
+        d & 15
+    } else {
+        d
+    }
+}
+
+/// The number of folded values of a base-b digit.
+pub fn folded_size(b: u32) -> u32 {
+    b.min(16)
+}
+
+/// Renders a prefix as hex digits `0x5.3.a` (depth 0: `root`).
+pub fn prefix_name(prefix: &[u32]) -> String {
+    if prefix.is_empty() {
+        "root".into()
+    } else {
+        prefix
+            .iter()
+            .map(|d| format!("{d:x}"))
+            .collect::<Vec<_>>()
+            .join(".")
+    }
+}
