@@ -48,7 +48,10 @@ fn check<'a>(r: &'a gartowen::verify::ImplReport, name: &str) -> &'a gartowen::v
 fn imitations_claiming_owen_fail_the_joint_laws_as_external_programs() {
     let ex = examples();
     for (command, fails) in [
-        (ex.2.display().to_string(), &["pair-law", "flip-rank", "pair-lemma"][..]),
+        (
+            ex.2.display().to_string(),
+            &["pair-law", "flip-rank", "pair-lemma"][..],
+        ),
         (ex.3.display().to_string(), &["flip-rank"][..]),
         (format!("{} improved", ex.3.display()), &["flip-rank"][..]),
     ] {
@@ -62,7 +65,11 @@ fn imitations_claiming_owen_fail_the_joint_laws_as_external_programs() {
         for f in fails {
             let c = check(&r, f);
             assert_eq!(c.verdict, Verdict::Fail, "{command} {f}: {}", c.detail);
-            assert!(c.detail.contains("depth") || c.detail.contains("r = "), "{}", c.detail);
+            assert!(
+                c.detail.contains("depth") || c.detail.contains("r = "),
+                "{}",
+                c.detail
+            );
         }
     }
 }
@@ -82,7 +89,12 @@ fn correct_example_passes_bit_exact_against_its_builtin_twin() {
     let registry = gartowen::registry();
     for width in [Width::W32, Width::W64] {
         let p = spawn(examples().0.to_str().unwrap(), width, 10_000);
-        let c = external_candidate(Arc::new(p), 7, Claim::OWEN, Some((&registry, "owen-per-bit-hash")));
+        let c = external_candidate(
+            Arc::new(p),
+            7,
+            Claim::OWEN,
+            Some((&registry, "owen-per-bit-hash")),
+        );
         let r = check_candidate(&c, Level::Quick, 1);
         let names: Vec<&str> = r.checks.iter().map(|c| c.check.as_str()).collect();
         assert_eq!(

@@ -138,7 +138,12 @@ fn the_registry_passes_quick_verification() {
         .iter()
         .find(|r| r.name == "art-owen-16p:table=256")
         .unwrap();
-    let collisions = &art.profile.iter().find(|(f, _)| f == "collisions").unwrap().1;
+    let collisions = &art
+        .profile
+        .iter()
+        .find(|(f, _)| f == "collisions")
+        .unwrap()
+        .1;
     assert!(collisions.contains('x'), "{collisions}");
 }
 

@@ -23,6 +23,7 @@ struct Cli {
 #[derive(Subcommand)]
 enum Command {
     Generate(commands::generate::GenerateArgs),
+    Scramble(commands::scramble::ScrambleArgs),
     Check(commands::check::CheckArgs),
     Inspect(commands::inspect::InspectArgs),
     Discrepancy(commands::discrepancy::DiscrepancyArgs),
@@ -36,6 +37,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Generate(a) => commands::generate::run(a),
+        Command::Scramble(a) => commands::scramble::run(a),
         Command::Check(a) => commands::check::run(a),
         Command::Inspect(a) => commands::inspect::run(a),
         Command::Discrepancy(a) => commands::discrepancy::run(a),

@@ -229,7 +229,9 @@ fn external_programs_are_verified_with_a_certificate() {
         16,
         "the program's bytes are checksummed"
     );
-    let checks = v["result"]["implementations"][0]["checks"].as_array().unwrap();
+    let checks = v["result"]["implementations"][0]["checks"]
+        .as_array()
+        .unwrap();
     let expect = checks.last().unwrap();
     assert_eq!(expect["check"], "expect");
     assert_eq!(expect["verdict"], "pass");

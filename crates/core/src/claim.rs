@@ -70,7 +70,10 @@ impl NodeGroup {
             NodeGroup::Symmetric => (2..=b).map(|k| (k as f64).log2()).sum(),
             // |GL(q,2)| = Π_{i<q} (2^q − 2^i).
             NodeGroup::Affine => {
-                q as f64 + (0..q).map(|i| ((b - (1u64 << i)) as f64).log2()).sum::<f64>()
+                q as f64
+                    + (0..q)
+                        .map(|i| ((b - (1u64 << i)) as f64).log2())
+                        .sum::<f64>()
             }
             NodeGroup::Translation | NodeGroup::Cyclic => q as f64,
         }
@@ -237,7 +240,10 @@ mod tests {
         // In base 8, AGL(3,2) has 1344 elements: count over all 8! permutations is costly, so
         // check the order formula against the product instead.
         assert_eq!(NodeGroup::Affine.log2_order(3).exp2().round() as u64, 1344);
-        assert_eq!(NodeGroup::Symmetric.log2_order(3).exp2().round() as u64, 40320);
+        assert_eq!(
+            NodeGroup::Symmetric.log2_order(3).exp2().round() as u64,
+            40320
+        );
     }
 
     #[test]

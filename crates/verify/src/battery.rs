@@ -17,7 +17,9 @@
 use crate::law::SubTest;
 use crate::sampling::SeedBuilder;
 use crate::stats::{min_detectable_w, FAMILY_ALPHA};
-use gartowen_core::{BuildContext, Claim, CoreError, PowerOfTwoBase, Registry, Scrambler, SplitMix64, Width};
+use gartowen_core::{
+    BuildContext, Claim, CoreError, PowerOfTwoBase, Registry, Scrambler, SplitMix64, Width,
+};
 use gartowen_netcheck::{counting::t_value, rank, CheckBase, PointSet};
 use gartowen_oracles::inspector::{inspect_exhaustive, inspect_probes};
 use gartowen_seq::SequenceKind;
@@ -467,7 +469,8 @@ pub fn check_candidate(c: &Candidate, level: Level, judged: usize) -> ImplReport
         }
         r
     };
-    let guarded = |check: &str, f: &dyn Fn() -> (Verdict, String, Option<f64>)| guard(timed(check, f));
+    let guarded =
+        |check: &str, f: &dyn Fn() -> (Verdict, String, Option<f64>)| guard(timed(check, f));
     let mut checks = vec![
         if c.invertible {
             guarded("inverse", &|| check_inverse(probe, level))
@@ -617,8 +620,7 @@ pub fn profile(checks: &[CheckResult]) -> Vec<(String, String)> {
         .map(|c| {
             let row: String = (0..=depth_max)
                 .map(|d| {
-                    let at: Vec<&SubTest> =
-                        c.tests.iter().filter(|t| t.depth == Some(d)).collect();
+                    let at: Vec<&SubTest> = c.tests.iter().filter(|t| t.depth == Some(d)).collect();
                     if at.is_empty() {
                         '-'
                     } else if at.iter().any(|t| t.deviates) {

@@ -668,9 +668,7 @@ impl Scrambler for ExternalScrambler {
         width == self.process.width
     }
     fn scramble(&self, x: u64, _width: Width, dim: u32) -> u64 {
-        self.request(&[x], dim)
-            .map(|v| v[0])
-            .unwrap_or_default()
+        self.request(&[x], dim).map(|v| v[0]).unwrap_or_default()
     }
     /// One request per [`MAX_BATCH`] words; after a failure the words become 0 (the battery
     /// reads [`ExternalProcess::failure`]).

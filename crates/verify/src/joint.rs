@@ -357,23 +357,25 @@ pub fn collision_plan(cfg: &LawConfig) -> Option<CollisionPlan> {
     let depths = (1..=last)
         .take(12)
         .map(|k| {
-            let count = b.checked_pow(k).map_or(nodes_cap, |n| (n as usize).min(nodes_cap));
-            let prefixes: Vec<Vec<u32>> = if b.checked_pow(k).is_some_and(|n| n as usize <= nodes_cap)
-            {
-                (0..b.pow(k))
-                    .map(|idx| {
-                        (0..k)
-                            .map(|j| ((idx / b.pow(k - 1 - j)) % b) as u32)
-                            .collect()
-                    })
-                    .collect()
-            } else {
-                let mut set = std::collections::BTreeSet::new();
-                while set.len() < count {
-                    set.insert(tree.random_prefix(k, &mut rng));
-                }
-                set.into_iter().collect()
-            };
+            let count = b
+                .checked_pow(k)
+                .map_or(nodes_cap, |n| (n as usize).min(nodes_cap));
+            let prefixes: Vec<Vec<u32>> =
+                if b.checked_pow(k).is_some_and(|n| n as usize <= nodes_cap) {
+                    (0..b.pow(k))
+                        .map(|idx| {
+                            (0..k)
+                                .map(|j| ((idx / b.pow(k - 1 - j)) % b) as u32)
+                                .collect()
+                        })
+                        .collect()
+                } else {
+                    let mut set = std::collections::BTreeSet::new();
+                    while set.len() < count {
+                        set.insert(tree.random_prefix(k, &mut rng));
+                    }
+                    set.into_iter().collect()
+                };
             (k, prefixes)
         })
         .collect();

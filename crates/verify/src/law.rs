@@ -95,7 +95,9 @@ impl LawConfig {
 
     /// Depths 0..=max_depth that have a full digit.
     pub fn depths(&self) -> std::ops::RangeInclusive<u32> {
-        0..=self.max_depth.min(self.tree.full_digits().saturating_sub(1))
+        0..=self
+            .max_depth
+            .min(self.tree.full_digits().saturating_sub(1))
     }
 }
 

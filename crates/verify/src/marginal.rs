@@ -92,10 +92,7 @@ pub fn analyse(cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
         let mut affine_hits = 0u64;
         let mut members = 0u64;
         for seed_out in outputs {
-            let imgs: Vec<u32> = seed_out[i]
-                .iter()
-                .map(|&y| cfg.tree.digit(y, k))
-                .collect();
+            let imgs: Vec<u32> = seed_out[i].iter().map(|&y| cfg.tree.digit(y, k)).collect();
             if !member(g, b, &imgs) {
                 outsiders += 1;
                 first_outsider.get_or_insert(imgs);
@@ -116,7 +113,9 @@ pub fn analyse(cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
             name: format!(
                 "{node}: every permutation in {}{}",
                 g.symbol(cfg.tree.q()),
-                first_outsider.map_or(String::new(), |p| format!(" (first outsider: images {p:?})"))
+                first_outsider.map_or(String::new(), |p| format!(
+                    " (first outsider: images {p:?})"
+                ))
             ),
             depth: Some(k),
             requires: Requirement::Marginal,
@@ -135,7 +134,11 @@ pub fn analyse(cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
         tests.push(SubTest::chi(
             format!(
                 "{node}: {} uniform over {}",
-                if full_perm { "permutation" } else { "(π(0), π(1))" },
+                if full_perm {
+                    "permutation"
+                } else {
+                    "(π(0), π(1))"
+                },
                 g.symbol(cfg.tree.q())
             ),
             Some(k),

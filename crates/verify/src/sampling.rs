@@ -12,7 +12,8 @@ use gartowen_core::{DigitLayout, Scrambler, SplitMix64, Width};
 use rayon::prelude::*;
 
 /// Builds the instance of an implementation for one seed.
-pub type SeedBuilder<'a> = dyn Fn(u64) -> Result<Box<dyn Scrambler + 'a>, String> + Send + Sync + 'a;
+pub type SeedBuilder<'a> =
+    dyn Fn(u64) -> Result<Box<dyn Scrambler + 'a>, String> + Send + Sync + 'a;
 
 /// Words to scramble in one dimension for the first `seeds` seeds.
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -58,9 +58,7 @@ pub fn chi_square(counts: &[u64], probs: &[f64]) -> ChiSquare {
     } else if dof == 0 || n == 0 {
         1.0
     } else {
-        ChiSquared::new(dof as f64)
-            .expect("dof ≥ 1")
-            .sf(statistic)
+        ChiSquared::new(dof as f64).expect("dof ≥ 1").sf(statistic)
     };
     ChiSquare {
         statistic,
@@ -236,7 +234,10 @@ mod tests {
                 let direct: f64 = (k..200)
                     .map(|j| (-lambda + j as f64 * f64::ln(lambda) - ln_factorial(j)).exp())
                     .sum();
-                assert!((poisson_sf(k, lambda) - direct).abs() < 1e-12, "{lambda} {k}");
+                assert!(
+                    (poisson_sf(k, lambda) - direct).abs() < 1e-12,
+                    "{lambda} {k}"
+                );
             }
         }
     }

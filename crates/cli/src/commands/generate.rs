@@ -139,33 +139,56 @@ fn plan(a: &GenerateArgs) -> Result<Plan, CliError> {
     })
 }
 
-/// Calls `emit` with each output point (scrambled words), in the requested order.
-fn for_each_point(
-    p: &Plan,
-    order: PointOrder,
-    mut emit: impl FnMut(&[u64]) -> Result<(), CliError>,
-) -> Result<(), CliError> {
-    let width = p.seq.width();
-    let dims = p.seq.dims();
-    let mut row = vec![0u64; dims];
-    for i in 0..p.count {
-        let position = p.start + i;
-        let index = match order {
-            PointOrder::Natural => position,
-            PointOrder::Gray => gray_code(position),
-        };
-        for (j, x) in row.iter_mut().enumerate() {
-            *x = p.scrambler.scramble(p.seq.point(index, j), width, j as u32);
-        }
-        emit(&row)?;
-    }
-    Ok(())
+/// Rows of words to write: `row(i, buf)` fills point i (0 ≤ i < count) of `dims` words.
+pub struct RowSource<'a> {
+    /// Word width of the rows.
+    pub width: Width,
+    /// Coordinates per point.
+    pub dims: usize,
+    /// Number of points.
+    pub count: u64,
+    /// Fills one row.
+    pub row: Box<dyn Fn(u64, &mut [u64]) + 'a>,
 }
 
-/// Writes the points as an (N, d) .npy array of `T`, converting each word with `conv`.
+impl RowSource<'_> {
+    /// Calls `emit` with each row in order.
+    fn for_each(
+        &self,
+        mut emit: impl FnMut(&[u64]) -> Result<(), CliError>,
+    ) -> Result<(), CliError> {
+        let mut buf = vec![0u64; self.dims];
+        for i in 0..self.count {
+            (self.row)(i, &mut buf);
+            emit(&buf)?;
+        }
+        Ok(())
+    }
+}
+
+/// The generated points (scrambled words) in the requested order.
+fn rows<'a>(p: &'a Plan, order: PointOrder) -> RowSource<'a> {
+    let width = p.seq.width();
+    RowSource {
+        width,
+        dims: p.seq.dims(),
+        count: p.count,
+        row: Box::new(move |i, row| {
+            let position = p.start + i;
+            let index = match order {
+                PointOrder::Natural => position,
+                PointOrder::Gray => gray_code(position),
+            };
+            for (j, x) in row.iter_mut().enumerate() {
+                *x = p.scrambler.scramble(p.seq.point(index, j), width, j as u32);
+            }
+        }),
+    }
+}
+
+/// Writes the rows as an (N, d) .npy array of `T`, converting each word with `conv`.
 fn write_npy_as<T: npyz::AutoSerialize>(
-    p: &Plan,
-    order: PointOrder,
+    src: &RowSource,
     out: &mut dyn Write,
     conv: impl Fn(u64) -> T,
 ) -> Result<(), CliError> {
@@ -173,11 +196,11 @@ fn write_npy_as<T: npyz::AutoSerialize>(
     let npy = |e: std::io::Error| CliError::Io(format!("npy write failed: {e}"));
     let mut w = npyz::WriteOptions::<T>::new()
         .default_dtype()
-        .shape(&[p.count, p.seq.dims() as u64])
+        .shape(&[src.count, src.dims as u64])
         .writer(out)
         .begin_nd()
         .map_err(npy)?;
-    for_each_point(p, order, |row| {
+    src.for_each(|row| {
         for &x in row {
             w.push(&conv(x)).map_err(npy)?;
         }
@@ -186,32 +209,39 @@ fn write_npy_as<T: npyz::AutoSerialize>(
     w.finish().map_err(npy)
 }
 
-fn write_npy(p: &Plan, a: &GenerateArgs, out: &mut dyn Write) -> Result<(), CliError> {
-    let width = p.seq.width();
-    match (a.words, width.bits()) {
-        (false, _) => write_npy_as(p, a.order, out, |x| word_to_f64(x, width)),
-        (true, 32) => write_npy_as(p, a.order, out, |x| x as u32),
-        (true, _) => write_npy_as(p, a.order, out, |x| x),
+/// Writes rows as .npy: float64 values, or uint32/uint64 words with `words`.
+pub fn write_npy(src: &RowSource, words: bool, out: &mut dyn Write) -> Result<(), CliError> {
+    let width = src.width;
+    match (words, width.bits()) {
+        (false, _) => write_npy_as(src, out, |x| word_to_f64(x, width)),
+        (true, 32) => write_npy_as(src, out, |x| x as u32),
+        (true, _) => write_npy_as(src, out, |x| x),
     }
 }
 
-fn write_text(p: &Plan, a: &GenerateArgs, out: &mut dyn Write) -> Result<(), CliError> {
-    let width: Width = p.seq.width();
+/// Writes rows as CSV (floats, or decimal words with `words`) or hex words.
+pub fn write_text(
+    src: &RowSource,
+    format: PointFormat,
+    words: bool,
+    out: &mut dyn Write,
+) -> Result<(), CliError> {
+    let width: Width = src.width;
     let hex_digits = (width.bits() / 4) as usize;
     let mut line = String::new();
-    for_each_point(p, a.order, |row| {
+    src.for_each(|row| {
         line.clear();
         for (j, &x) in row.iter().enumerate() {
             use std::fmt::Write as _;
             let sep = if j == 0 {
                 ""
-            } else if a.format == PointFormat::Csv {
+            } else if format == PointFormat::Csv {
                 ","
             } else {
                 " "
             };
             line.push_str(sep);
-            let _ = match (a.format, a.words) {
+            let _ = match (format, words) {
                 (PointFormat::Hex, _) => write!(line, "{x:0hex_digits$x}"),
                 (_, true) => write!(line, "{x}"),
                 (_, false) => write!(line, "{:?}", word_to_f64(x, width)),
@@ -230,9 +260,10 @@ pub fn run(a: GenerateArgs) -> Result<ExitCode, CliError> {
             "--words applies to npy and csv; hex is always words".into(),
         ));
     }
+    let src = rows(&p, a.order);
     write_atomically(a.output.as_deref(), |out| match a.format {
-        PointFormat::Npy => write_npy(&p, &a, out),
-        PointFormat::Csv | PointFormat::Hex => write_text(&p, &a, out),
+        PointFormat::Npy => write_npy(&src, a.words, out),
+        PointFormat::Csv | PointFormat::Hex => write_text(&src, a.format, a.words, out),
     })?;
     Ok(ExitCode::SUCCESS)
 }

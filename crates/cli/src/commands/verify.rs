@@ -274,10 +274,17 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
                 .expect("template"),
         );
         let claim = parse_claim(&a.claim)?;
-        let reports = verify_shard(&registry, &a.implementations, level, shard, claim, &|name| {
-            bar.set_message(name.to_string());
-            bar.inc(1);
-        })?;
+        let reports = verify_shard(
+            &registry,
+            &a.implementations,
+            level,
+            shard,
+            claim,
+            &|name| {
+                bar.set_message(name.to_string());
+                bar.inc(1);
+            },
+        )?;
         bar.finish_and_clear();
         let inputs = registry_inputs(&reports);
         (level, reports, inputs)
