@@ -264,3 +264,62 @@ fn external_programs_are_verified_with_a_certificate() {
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("cannot start '/nonexistent/prog'"));
 }
+
+#[test]
+fn inspect_runs_the_laws_on_an_external_program() {
+    let dir = tempfile::tempdir().unwrap();
+    let shift = build_example(dir.path(), "digital_shift");
+    let good = build_example(dir.path(), "owen_per_bit");
+    let o = gartowen(&[
+        "inspect",
+        "--external",
+        &shift,
+        "--base",
+        "2",
+        "--width",
+        "32",
+        "--laws",
+    ]);
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(1), "{text}");
+    assert!(text.contains("nested scramble in base 2"), "{text}");
+    assert!(text.contains("pair-law    fail      depth 0→ -x"), "{text}");
+    let o = gartowen(&[
+        "inspect",
+        "--external",
+        &good,
+        "--base",
+        "2",
+        "--width",
+        "32",
+        "--laws",
+        "--json",
+    ]);
+    assert_eq!(o.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["claim"], "owen");
+    assert!(v["laws"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .all(|c| c["verdict"] == "pass"));
+    // The digital shift claiming only marginal translations is judged on that: it passes.
+    let o = gartowen(&[
+        "inspect",
+        "--external",
+        &shift,
+        "--base",
+        "2",
+        "--width",
+        "32",
+        "--laws",
+        "--claim",
+        "marginal:translation",
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stdout)
+    );
+}

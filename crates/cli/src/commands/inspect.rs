@@ -1,10 +1,15 @@
-//! `gartowen inspect`: is a registered scrambler a nested scramble in base B?
+//! `gartowen inspect`: is a registered scrambler (or an external program) a nested scramble in
+//! base B, and what are its node laws by depth?
 
 use crate::CliError;
 use clap::Args;
-use gartowen::core::{BuildContext, PowerOfTwoBase, Width};
+use gartowen::core::{BuildContext, Claim, PowerOfTwoBase, Scrambler, Width};
+use gartowen::external::{ExternalProcess, ExternalScrambler};
 use gartowen::oracles::inspector::{inspect_exhaustive, inspect_probes, InspectReport};
+use gartowen::verify::{judge_families, laws::run_laws, Candidate, Level, SeedBuilder};
 use std::process::ExitCode;
+use std::sync::Arc;
+use std::time::Duration;
 
 /// Decide from black-box evaluations whether a scrambler is a nested scramble in base B.
 ///
@@ -18,12 +23,33 @@ use std::process::ExitCode;
 ///   gartowen inspect --scramble owen-oracle --base 4 --width 16
 ///   gartowen inspect --scramble owen-oracle:base=16 --base 2 --width 16      (exit 1)
 ///   gartowen inspect --scramble owen-oracle:xor --base 16 --width 64 --probes 5000 --json
+///   gartowen inspect --external ./my_scrambler --base 2 --width 32 --laws   (node and joint laws)
+///
+/// With --laws, the marginal and joint law tests of `verify --level quick` run over seeds
+/// 0, 1, 2, … and print their per-depth profile (`.` no deviation detected, `x` deviation,
+/// `-` not tested) with the worst sub-test of each family; --claim sets what is judged.
 #[derive(Args, Debug)]
 #[command(verbatim_doc_comment)]
 pub struct InspectArgs {
     /// Scrambler from the registry, NAME[:OPTION...].
+    #[arg(
+        long,
+        required_unless_present = "external",
+        conflicts_with = "external"
+    )]
+    pub scramble: Option<String>,
+    /// An external program speaking the gartowen protocol (see `verify --external`).
     #[arg(long)]
-    pub scramble: String,
+    pub external: Option<String>,
+    /// Seconds to wait for each reply of the external program.
+    #[arg(long, default_value_t = 10.0, requires = "external")]
+    pub timeout: f64,
+    /// Also run the node and joint law tests and print their per-depth profile.
+    #[arg(long)]
+    pub laws: bool,
+    /// Claim to judge the laws on (default: the scrambler's own; owen for external programs).
+    #[arg(long, requires = "laws")]
+    pub claim: Option<String>,
     /// Base B = 2^q in which to test nestedness (also the default base of the scrambler).
     #[arg(long)]
     pub base: u64,
@@ -82,15 +108,76 @@ fn text(r: &InspectReport, name: &str) -> String {
     out
 }
 
+/// The scrambler for `seed`: a registry entry or one seed's view of the external program.
+fn builder<'a>(
+    a: &'a InspectArgs,
+    base: PowerOfTwoBase,
+    width: Width,
+) -> Result<(Box<SeedBuilder<'a>>, Option<Arc<ExternalProcess>>), CliError> {
+    if let Some(command) = &a.external {
+        if !(a.timeout.is_finite() && a.timeout > 0.0) {
+            return Err(CliError::Usage(format!(
+                "--timeout {} is not a positive number of seconds",
+                a.timeout
+            )));
+        }
+        if width != Width::W32 && width != Width::W64 {
+            return Err(CliError::Usage(format!(
+                "--width {}: the protocol carries 32- or 64-bit words",
+                width.bits()
+            )));
+        }
+        let p = Arc::new(
+            ExternalProcess::spawn(command, base, width, Duration::from_secs_f64(a.timeout))
+                .map_err(|e| CliError::Usage(e.to_string()))?,
+        );
+        let claim = match &a.claim {
+            Some(t) => Claim::parse(t).map_err(|e| CliError::Usage(format!("--claim: {e}")))?,
+            None => Claim::OWEN,
+        };
+        let shared = p.clone();
+        Ok((
+            Box::new(move |seed| {
+                Ok(
+                    Box::new(ExternalScrambler::new(shared.clone(), seed, claim))
+                        as Box<dyn Scrambler>,
+                )
+            }),
+            Some(p),
+        ))
+    } else {
+        let request = a.scramble.clone().expect("clap requires one");
+        let registry = gartowen::registry();
+        registry.build_with(
+            &request,
+            &BuildContext {
+                seed: 0,
+                default_base: base,
+            },
+        )?;
+        Ok((
+            Box::new(move |seed| {
+                registry
+                    .build_with(
+                        &request,
+                        &BuildContext {
+                            seed,
+                            default_base: base,
+                        },
+                    )
+                    .map_err(|e| e.to_string())
+            }),
+            None,
+        ))
+    }
+}
+
 /// Runs `inspect`.
 pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
     let base = PowerOfTwoBase::from_base(a.base)?;
     let width = Width::new(a.width)?;
-    let ctx = BuildContext {
-        seed: a.seed,
-        default_base: base,
-    };
-    let s = gartowen::registry().build_with(&a.scramble, &ctx)?;
+    let (with_seed, process) = builder(&a, base, width)?;
+    let s = with_seed(a.seed).map_err(CliError::Usage)?;
     if !s.supports_width(width) {
         return Err(CliError::Usage(format!(
             "{} does not support {}-bit words",
@@ -108,16 +195,78 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
         }
         inspect_probes(&f, width, base, depth, a.probes, a.probe_seed)
     };
+    let external_failure = || process.as_ref().and_then(|p| p.failure());
+    if let Some(e) = external_failure() {
+        return Err(CliError::Usage(format!("external program failed: {e}")));
+    }
+    let laws = if a.laws {
+        let claim = match (&a.claim, &a.external) {
+            (Some(t), _) => {
+                Claim::parse(t).map_err(|e| CliError::Usage(format!("--claim: {e}")))?
+            }
+            (None, Some(_)) => Claim::OWEN,
+            (None, None) => s.claim(),
+        };
+        let name = s.name();
+        let probe = with_seed(a.seed).map_err(CliError::Usage)?;
+        let c = Candidate {
+            index: 0,
+            name,
+            probe,
+            with_seed,
+            invertible: process.is_none(),
+            health: Box::new(|| None),
+            twin: None,
+            claim,
+        };
+        let families = run_laws(&c, Level::Quick, 0).map_err(CliError::Usage)?;
+        if let Some(e) = external_failure() {
+            return Err(CliError::Usage(format!("external program failed: {e}")));
+        }
+        Some((claim, judge_families(families, claim, 1, 0.0)))
+    } else {
+        None
+    };
     if a.json {
-        let doc = serde_json::json!({
+        let mut doc = serde_json::json!({
             "tool": "gartowen", "version": env!("CARGO_PKG_VERSION"), "command": "inspect",
             "scrambler": s.name(), "seed": a.seed, "dim": a.dim, "report": report,
         });
+        if let Some((claim, checks)) = &laws {
+            doc["claim"] = serde_json::json!(claim.to_string());
+            doc["laws"] = serde_json::json!(checks);
+            doc["profile"] = serde_json::json!(gartowen::verify::profile(checks));
+        }
         println!("{}", serde_json::to_string_pretty(&doc).expect("json"));
     } else {
         print!("{}", text(&report, &s.name()));
+        if let Some((claim, checks)) = &laws {
+            println!(
+                "  laws over seeds 0, 1, 2, … ({}-bit words, dimension 0; dimensions 0..64 for \
+                 `dimensions`) judged as {claim} (family-wise α = 1e-3):",
+                if s.supports_width(Width::W32) { 32 } else { 64 }
+            );
+            let profile = gartowen::verify::profile(checks);
+            for c in checks {
+                let row = profile
+                    .iter()
+                    .find(|(f, _)| *f == c.check)
+                    .map_or("", |(_, r)| r.as_str());
+                println!(
+                    "    {:<11} {:<9} depth 0→ {row}",
+                    c.check,
+                    format!("{:?}", c.verdict).to_lowercase()
+                );
+                println!("        {}", c.detail);
+            }
+        }
     }
-    Ok(if report.nested_scramble {
+    let laws_failed = laws.as_ref().is_some_and(|(_, checks)| {
+        checks
+            .iter()
+            .any(|c| c.verdict == gartowen::verify::Verdict::Fail)
+    });
+    Ok(if report.nested_scramble && !laws_failed {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)
