@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The main job: `verify --level quick` over the whole registry and over the external C example
-# (bit-exact against its built-in twin), then
+# The main job: `verify --level quick` over the whole registry, the imitations judged as Owen
+# scrambles (they must fail), the external C examples (the per-bit Owen twin bit-exact; the
+# digital shift and LK hash must fail), then
 # generate the base-16 SZ sequence, Owen-scramble it with the exact oracle, and check that it is
 # still a (0,3,16)-net in base 16 and that the scramble is nested in base 16 (and, as the paper
 # predicts, not in base 2).
@@ -14,11 +15,27 @@ g=target/release/gartowen
 
 $g verify --level quick --json "$out/verify_quick.json"
 
+# Imitations claiming Owen must fail, naming the check and depth.
+expect_fail() {
+  if "$@" > "$out/last_expected_failure.txt"; then
+    echo "unexpected: '$*' passed" >&2
+    exit 1
+  fi
+  grep -m1 "FAIL" "$out/last_expected_failure.txt"
+}
+expect_fail $g verify --impl digital-shift --impl lk-hash --impl lk-hash-improved --claim owen \
+  --json "$out/verify_imitations.json"
+
 # The external path: the C twin of owen-per-bit-hash, verified bit-exact against it.
 if command -v cc >/dev/null; then
   cc -O2 -o "$out/owen_per_bit" examples/external/owen_per_bit.c
   $g verify --external "$out/owen_per_bit" --base 2 --width 64 --expect owen-per-bit-hash \
     --json "$out/verify_external.json"
+  cc -O2 -o "$out/digital_shift" examples/external/digital_shift.c
+  cc -O2 -o "$out/lk_hash" examples/external/lk_hash.c
+  expect_fail $g verify --external "$out/digital_shift" --base 2
+  expect_fail $g verify --external "$out/lk_hash" --base 2
+  expect_fail $g verify --external "$out/lk_hash improved" --base 2
 fi
 
 $g generate --seq sz16 --dims 16 --log2-n 12 --scramble owen-oracle --seed 1 --format npy -o "$out/sz16_owen.npy"
