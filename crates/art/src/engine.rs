@@ -52,7 +52,7 @@ struct Step {
 }
 
 /// Tag for the dimension shifts (`hash_words([seed, dim, SHIFT_TAG])`).
-const SHIFT_TAG: u64 = 0x7368_6966_74; // "shift"
+const SHIFT_TAG: u64 = 0x0073_6869_6674; // "shift"
 
 /// Number of dimensions whose root symbol and shifts are precomputed.
 const CACHED_ROOTS: u32 = 256;

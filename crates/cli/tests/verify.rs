@@ -57,11 +57,8 @@ fn verify_named_implementations_writes_json_and_exits_0() {
             "dimensions"
         ]
     );
-    for k in 3..9 {
-        assert_eq!(
-            imps[1]["checks"][k]["verdict"], "measured",
-            "lk-hash claims no law"
-        );
+    for check in imps[1]["checks"].as_array().unwrap().iter().skip(3) {
+        assert_eq!(check["verdict"], "measured", "lk-hash claims no law");
     }
     assert_eq!(imps[0]["claim"], "marginal:symmetric");
     assert_eq!(imps[0]["checks"][3]["verdict"], "pass");

@@ -200,7 +200,7 @@ pub fn rank_analyse(cfg: &LawConfig, plan: RankPlan, outputs: &[&[Vec<u64>]]) ->
     // Columns in depth order (constant column first), each a bit vector over seeds.
     let mut columns: Vec<(Option<Column>, Vec<u64>)> = vec![(None, {
         let mut v = vec![u64::MAX; row_words];
-        if n % 64 != 0 {
+        if !n.is_multiple_of(64) {
             v[row_words - 1] = (1u64 << (n % 64)) - 1;
         }
         v

@@ -139,6 +139,9 @@ fn plan(a: &GenerateArgs) -> Result<Plan, CliError> {
     })
 }
 
+/// Fills row i of a [`RowSource`] into the buffer.
+pub type RowFiller<'a> = Box<dyn Fn(u64, &mut [u64]) + 'a>;
+
 /// Rows of words to write: `row(i, buf)` fills point i (0 ≤ i < count) of `dims` words.
 pub struct RowSource<'a> {
     /// Word width of the rows.
@@ -148,7 +151,7 @@ pub struct RowSource<'a> {
     /// Number of points.
     pub count: u64,
     /// Fills one row.
-    pub row: Box<dyn Fn(u64, &mut [u64]) + 'a>,
+    pub row: RowFiller<'a>,
 }
 
 impl RowSource<'_> {
