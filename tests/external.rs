@@ -13,9 +13,9 @@ use std::sync::{Arc, OnceLock};
 use std::time::Duration;
 
 /// Compiles the examples once per test binary: (owen_per_bit, broken_hash, digital_shift,
-/// lk_hash).
-fn examples() -> &'static (PathBuf, PathBuf, PathBuf, PathBuf) {
-    static BUILT: OnceLock<(PathBuf, PathBuf, PathBuf, PathBuf)> = OnceLock::new();
+/// lk_hash, owen_nested).
+fn examples() -> &'static (PathBuf, PathBuf, PathBuf, PathBuf, PathBuf) {
+    static BUILT: OnceLock<(PathBuf, PathBuf, PathBuf, PathBuf, PathBuf)> = OnceLock::new();
     BUILT.get_or_init(|| {
         let dir = std::env::temp_dir().join(format!("gartowen-external-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
@@ -36,12 +36,31 @@ fn examples() -> &'static (PathBuf, PathBuf, PathBuf, PathBuf) {
             build("broken_hash"),
             build("digital_shift"),
             build("lk_hash"),
+            build("owen_nested"),
         )
     })
 }
 
 fn check<'a>(r: &'a gartowen::verify::ImplReport, name: &str) -> &'a gartowen::verify::CheckResult {
     r.checks.iter().find(|c| c.check == name).unwrap()
+}
+
+#[test]
+fn a_true_owen_scramble_passes_every_check_in_bases_2_4_and_16_as_an_external_program() {
+    for base in [PowerOfTwoBase::B2, PowerOfTwoBase::B4, PowerOfTwoBase::B16] {
+        let p = ExternalProcess::spawn(
+            examples().4.to_str().unwrap(),
+            base,
+            Width::W32,
+            Duration::from_secs(10),
+        )
+        .unwrap();
+        let c = external_candidate(Arc::new(p), 3, Claim::OWEN, None);
+        let r = check_candidate(&c, Level::Quick, 1);
+        for check in &r.checks {
+            assert_eq!(check.verdict, Verdict::Pass, "base {} {check:?}", base.base());
+        }
+    }
 }
 
 #[test]
