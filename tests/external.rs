@@ -58,7 +58,12 @@ fn a_true_owen_scramble_passes_every_check_in_bases_2_4_and_16_as_an_external_pr
         let c = external_candidate(Arc::new(p), 3, Claim::OWEN, None);
         let r = check_candidate(&c, Level::Quick, 1);
         for check in &r.checks {
-            assert_eq!(check.verdict, Verdict::Pass, "base {} {check:?}", base.base());
+            assert_eq!(
+                check.verdict,
+                Verdict::Pass,
+                "base {} {check:?}",
+                base.base()
+            );
         }
     }
 }

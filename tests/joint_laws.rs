@@ -78,16 +78,12 @@ fn art_candidate<'a>(variant: ArtVariant, mutant: ArtMutant) -> Candidate<'a> {
             .map(|s| Box::new(s) as Box<dyn Scrambler>)
             .map_err(|e| e.to_string())
     };
-    Candidate {
-        index: 0,
-        name: format!("{}:{mutant:?}", variant.name()),
-        probe: build(0).unwrap(),
-        with_seed: Box::new(build),
-        invertible: true,
-        health: Box::new(|| None),
-        twin: None,
-        claim: Claim::OWEN,
-    }
+    Candidate::from_builder(
+        format!("{}:{mutant:?}", variant.name()),
+        Claim::OWEN,
+        Box::new(build),
+    )
+    .unwrap()
 }
 
 #[test]

@@ -3,7 +3,7 @@
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use gartowen_art::peers::{LkFlavor, LkHash, PerBitOwen};
-use gartowen_art::{ArtOwen, ArtVariant};
+use gartowen_art::{ArtMutant, ArtOwen, ArtVariant};
 use gartowen_core::{Identity, PowerOfTwoBase, Scrambler, SplitMix64};
 use gartowen_oracles::{FullTreeOwen, OwenVariant};
 
@@ -52,6 +52,14 @@ fn scramblers(c: &mut Criterion) {
         let s = ArtOwen::new(v, 256, 1).unwrap();
         list.push((
             format!("{}:table=256 ({} B)", v.name(), s.table_bytes()),
+            Box::new(s),
+        ));
+    }
+    // The design before per-dimension shifts, as the in-run reference for their cost.
+    for v in [ArtVariant::ArtOwen2, ArtVariant::ArtOwen16P] {
+        let s = ArtOwen::with_mutant(v, 256, 1, ArtMutant::RootOnlyDimensions).unwrap();
+        list.push((
+            format!("{}:table=256 without dimension shifts", v.name()),
             Box::new(s),
         ));
     }

@@ -22,16 +22,12 @@ fn main() {
                     .map(|s| Box::new(s) as Box<dyn Scrambler>)
                     .map_err(|e| e.to_string())
             };
-            let c = Candidate {
-                index: 0,
-                name: format!("{}:{mutant:?}", variant.name()),
-                probe: build(0).unwrap(),
-                with_seed: Box::new(build),
-                invertible: true,
-                health: Box::new(|| None),
-                twin: None,
-                claim: Claim::OWEN,
-            };
+            let c = Candidate::from_builder(
+                format!("{}:{mutant:?}", variant.name()),
+                Claim::OWEN,
+                Box::new(build),
+            )
+            .unwrap();
             let r = check_candidate(&c, Level::Quick, 1);
             let verdicts: Vec<String> = r
                 .checks

@@ -374,6 +374,27 @@ pub struct Candidate<'a> {
     pub claim: Claim,
 }
 
+impl<'a> Candidate<'a> {
+    /// An invertible in-process candidate judged on `claim`, with instances from `with_seed`
+    /// (the probe is seed 0's instance).
+    pub fn from_builder(
+        name: impl Into<String>,
+        claim: Claim,
+        with_seed: Box<SeedBuilder<'a>>,
+    ) -> Result<Candidate<'a>, String> {
+        Ok(Candidate {
+            index: 0,
+            name: name.into(),
+            probe: with_seed(0)?,
+            with_seed,
+            invertible: true,
+            health: Box::new(|| None),
+            twin: None,
+            claim,
+        })
+    }
+}
+
 /// Bit-exact agreement with the twin on seeds 0..4, dimensions 0..8 and 512 words each
 /// (0, the largest word, and seeded random words).
 fn check_twin(
