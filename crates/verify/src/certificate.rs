@@ -19,7 +19,7 @@
 //! the wall-time fields inside `result`.
 //!
 //! ```
-//! use gartowen::certificate::{Certificate, CertVerdict};
+//! use gartowen_verify::certificate::{Certificate, CertVerdict};
 //! let c = Certificate::new("check", CertVerdict::Pass, serde_json::json!({"base": 2}), vec![],
 //!     vec![], serde_json::json!({"t": 0}));
 //! let back = Certificate::parse(&c.to_json()).unwrap();
