@@ -231,7 +231,7 @@ impl ArtOwen {
         (k.input_shift, k.output_shift)
     }
 
-    #[inline]
+    #[inline(always)]
     fn dim_key(&self, dim: u32) -> DimKey {
         match self.dims.get(dim as usize) {
             Some(&k) => k,
@@ -239,6 +239,8 @@ impl ArtOwen {
         }
     }
 
+    #[cold]
+    #[inline(never)]
     fn hashed_dim(&self, dim: u32) -> DimKey {
         let root = SplitMix64::new(hash_words(&[self.seed, dim as u64, ROOT_TAG]))
             .bounded(self.grammar.symbols());
