@@ -63,7 +63,7 @@ pub struct CheckResult {
     pub detail: String,
     /// The measured value where there is one (the worst sub-test's statistic for the laws).
     pub value: Option<f64>,
-    /// Wall time.
+    /// Wall time (the law checks share one pass over the seeds: each gets an equal share).
     pub seconds: f64,
     /// The smallest p-value of the sub-tests (laws only).
     #[serde(default)]
