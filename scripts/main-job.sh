@@ -23,7 +23,7 @@ expect_fail() {
   fi
   grep -m1 "FAIL" "$out/last_expected_failure.txt"
 }
-expect_fail $g verify --impl digital-shift --impl lk-hash --impl lk-hash-improved --claim owen \
+expect_fail $g verify --impl digital-shift --impl lk-hash --impl lk-hash-improved --impl lms-shift --claim owen \
   --json "$out/verify_imitations.json"
 
 # The external path: the C twin of owen-per-bit-hash, verified bit-exact against it.

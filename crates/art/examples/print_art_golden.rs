@@ -1,6 +1,6 @@
 //! Prints golden vectors of every ART variant and peer (seed 2024, 256 symbols, dimension 1) for
 //! tests/golden.rs. Regenerate only on a deliberate change of the documented construction.
-use gartowen_art::peers::{DigitalShift, LkFlavor, LkHash, PerBitOwen};
+use gartowen_art::peers::{DigitalShift, LinearMatrixScramble, LkFlavor, LkHash, PerBitOwen};
 use gartowen_art::{ArtOwen, ArtVariant};
 use gartowen_core::{Scrambler, Width};
 
@@ -28,6 +28,10 @@ fn main() {
     ));
     list.push(("owen-per-bit-hash".into(), Box::new(PerBitOwen::new(2024))));
     list.push(("digital-shift".into(), Box::new(DigitalShift::new(2024))));
+    list.push((
+        "lms-shift".into(),
+        Box::new(LinearMatrixScramble::new(2024)),
+    ));
     for (name, s) in list {
         let out: Vec<String> = inputs
             .iter()

@@ -205,3 +205,61 @@ impl Scrambler for DigitalShift {
         y ^ self.shift(width, dim)
     }
 }
+
+/// Matoušek's random linear matrix scramble with a digital shift (LMS + shift, the scrambling
+/// `scipy.stats.qmc.Sobol` applies): output bit k is x_k ⊕ ⟨L_k, x_0..x_{k−1}⟩ ⊕ s_k, with
+/// the strictly lower part of each row L_k and the shift s drawn from `hash_words([seed, dim,
+/// k])`. Nested, and every node permutation is a uniform translation, but node flips are affine
+/// in the prefix bits: an imitation with exact GF(2) relations by construction.
+#[derive(Debug, Clone)]
+pub struct LinearMatrixScramble {
+    seed: u64,
+}
+
+impl LinearMatrixScramble {
+    /// The scramble with `seed`.
+    pub fn new(seed: u64) -> Self {
+        LinearMatrixScramble { seed }
+    }
+
+    /// The flip of bit k for a word whose top k bits are `prefix` (right-aligned).
+    #[inline]
+    fn flip(&self, dim: u32, k: u32, prefix: u64) -> u64 {
+        // k < 64: the row uses bits 0..k of the hash, the shift its bit 63 (disjoint).
+        let h = hash_words(&[self.seed, dim as u64, k as u64]);
+        let row = h & ((1u64 << k) - 1);
+        (((row & prefix).count_ones() as u64) ^ (h >> 63)) & 1
+    }
+}
+
+impl Scrambler for LinearMatrixScramble {
+    fn name(&self) -> String {
+        "lms-shift".into()
+    }
+    fn base(&self) -> PowerOfTwoBase {
+        PowerOfTwoBase::B2
+    }
+    /// Node permutations are uniform translations; they are affinely dependent.
+    fn claim(&self) -> Claim {
+        Claim::marginal(NodeGroup::Translation)
+    }
+    fn scramble(&self, x: u64, width: Width, dim: u32) -> u64 {
+        let w = width.bits();
+        let mut y = x;
+        for k in 0..w {
+            let prefix = if k == 0 { 0 } else { x >> (w - k) };
+            y ^= self.flip(dim, k, prefix) << (w - 1 - k);
+        }
+        y
+    }
+    fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
+        let w = width.bits();
+        let mut x = 0u64;
+        for k in 0..w {
+            let prefix = if k == 0 { 0 } else { x >> (w - k) };
+            let bit = ((y >> (w - 1 - k)) & 1) ^ self.flip(dim, k, prefix);
+            x |= bit << (w - 1 - k);
+        }
+        x
+    }
+}

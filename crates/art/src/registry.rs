@@ -1,7 +1,7 @@
 //! Registry entries: every ART-Owen variant (`NAME[:table=SYMBOLS]`, default 256 symbols) and
 //! the hash peers.
 
-use crate::peers::{DigitalShift, LkFlavor, LkHash, PerBitOwen};
+use crate::peers::{DigitalShift, LinearMatrixScramble, LkFlavor, LkHash, PerBitOwen};
 use crate::{ArtOwen, ArtVariant};
 use gartowen_core::registry::BuildContext;
 use gartowen_core::{
@@ -75,6 +75,11 @@ fn build_digital_shift(
 ) -> Result<Box<dyn Scrambler>, CoreError> {
     req.allow_only(&[])?;
     Ok(Box::new(DigitalShift::new(ctx.seed)))
+}
+
+fn build_lms(req: &ScramblerRequest, ctx: &BuildContext) -> Result<Box<dyn Scrambler>, CoreError> {
+    req.allow_only(&[])?;
+    Ok(Box::new(LinearMatrixScramble::new(ctx.seed)))
 }
 
 const MATRIX_NAMES: [&str; 8] = [
@@ -171,6 +176,13 @@ pub fn specs() -> Vec<ScramblerSpec> {
         claim: Claim::marginal(NodeGroup::Translation),
         summary: "random digital shift: XOR with one random word per dimension (an imitation)",
         build: build_digital_shift,
+    });
+    out.push(ScramblerSpec {
+        name: "lms-shift",
+        default_base: PowerOfTwoBase::B2,
+        claim: Claim::marginal(NodeGroup::Translation),
+        summary: "random linear matrix scramble + digital shift (SciPy's Sobol scrambling; an imitation)",
+        build: build_lms,
     });
     out
 }

@@ -132,6 +132,33 @@ fn peers_are_binary_nested_bijections() {
 }
 
 #[test]
+fn imitation_peers_are_nested_with_translation_nodes_of_the_stated_structure() {
+    use gartowen_art::peers::{DigitalShift, LinearMatrixScramble};
+    let w16 = Width::new(16).unwrap();
+    let shift = DigitalShift::new(3);
+    let lms = LinearMatrixScramble::new(3);
+    for s in [&shift as &dyn Scrambler, &lms] {
+        let f = |x: u64| s.scramble(x, w16, 2);
+        assert!(inspect_exhaustive(&f, w16, PowerOfTwoBase::B2, 16).nested_scramble);
+        for i in 0..1000u64 {
+            let x = mix64(i);
+            assert_eq!(s.unscramble(s.scramble(x, Width::W64, 2), Width::W64, 2), x);
+        }
+    }
+    // The shift is one XOR word; LMS is affine over GF(2): f(x ⊕ y ⊕ z) = f(x) ⊕ f(y) ⊕ f(z).
+    for i in 0..500u64 {
+        let (x, y, z) = (mix64(i), mix64(i + 7777), mix64(i + 99999));
+        let l = |v: u64| lms.scramble(v, Width::W64, 1);
+        assert_eq!(l(x ^ y ^ z), l(x) ^ l(y) ^ l(z));
+        let d = |v: u64| shift.scramble(v, Width::W64, 1);
+        assert_eq!(d(x) ^ x, d(y) ^ y);
+    }
+    // ...and LMS is not a mere shift: some input bit feeds a later output bit.
+    assert!((0..64u64)
+        .any(|i| lms.scramble(1 << i, Width::W64, 1) ^ lms.scramble(0, Width::W64, 1) != 1 << i));
+}
+
+#[test]
 fn step_table_path_equals_the_digit_by_digit_loop() {
     for v in all_variants() {
         for symbols in [6usize, 256] {
