@@ -210,6 +210,24 @@ mod tests {
     use super::*;
 
     #[test]
+    fn symbols_name_the_group_in_its_base() {
+        assert_eq!(NodeGroup::Symmetric.symbol(4), "S_16");
+        assert_eq!(NodeGroup::Affine.symbol(3), "AGL(3,2)");
+        assert_eq!(NodeGroup::Translation.symbol(2), "XOR translations of 4 digits");
+        assert_eq!(NodeGroup::Cyclic.symbol(1), "Z_2 shifts");
+    }
+
+    #[test]
+    fn only_owen_is_owen_and_odd_sizes_are_no_permutations_of_digits() {
+        assert!(Claim::OWEN.is_owen());
+        assert!(!Claim::NESTED.is_owen());
+        assert!(!Claim::marginal(NodeGroup::Symmetric).is_owen());
+        assert!(!Claim::independent_over(NodeGroup::Affine).is_owen());
+        assert!(!NodeGroup::Symmetric.contains(&[0, 1, 2]));
+        assert!(!NodeGroup::Symmetric.contains(&[]));
+    }
+
+    #[test]
     fn display_round_trips_through_parse() {
         for g in NodeGroup::ALL {
             for c in [Claim::marginal(g), Claim::independent_over(g)] {
