@@ -205,13 +205,18 @@ impl FullTreeOwen {
     }
 
     /// Scrambles a batch in place, caching each visited node's permutation: nodes near the root
-    /// are shared by many points, so they are drawn once per batch.
+    /// are shared by many points, so they are drawn once per batch. The cache holds at most
+    /// [`MAX_CACHED_NODES`] nodes (about 17 MB) and starts over when full, so memory does not
+    /// grow with the batch (node maps are pure functions: the output does not change).
     pub fn scramble_batch(&self, xs: &mut [u64], width: Width, dim: u32) {
         let layout = DigitLayout::new(width, self.base);
         let dim_key = self.dim_key(dim);
         let mut cache: std::collections::HashMap<(u32, u64), Permutation> =
             std::collections::HashMap::new();
         for x in xs.iter_mut() {
+            if cache.len() >= MAX_CACHED_NODES {
+                cache.clear();
+            }
             let mut out = 0u64;
             let mut prefix = 0u64;
             for k in 0..layout.num_digits() {
@@ -230,6 +235,9 @@ impl FullTreeOwen {
         }
     }
 }
+
+/// The most node permutations one [`FullTreeOwen::scramble_batch`] call keeps cached.
+pub const MAX_CACHED_NODES: usize = 1 << 16;
 
 impl Scrambler for FullTreeOwen {
     fn name(&self) -> String {

@@ -213,7 +213,10 @@ mod tests {
     fn symbols_name_the_group_in_its_base() {
         assert_eq!(NodeGroup::Symmetric.symbol(4), "S_16");
         assert_eq!(NodeGroup::Affine.symbol(3), "AGL(3,2)");
-        assert_eq!(NodeGroup::Translation.symbol(2), "XOR translations of 4 digits");
+        assert_eq!(
+            NodeGroup::Translation.symbol(2),
+            "XOR translations of 4 digits"
+        );
         assert_eq!(NodeGroup::Cyclic.symbol(1), "Z_2 shifts");
     }
 
