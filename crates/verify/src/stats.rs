@@ -222,6 +222,22 @@ mod tests {
     }
 
     #[test]
+    fn chi_square_statistic_dof_and_p_by_hand() {
+        // (600 − 500)²/500 + (400 − 500)²/500 = 40 on 1 dof.
+        let c = chi_square(&[600, 400], &[0.5, 0.5]);
+        assert!((c.statistic - 40.0).abs() < 1e-12);
+        assert_eq!((c.dof, c.n), (1, 1000));
+        assert!((c.p_value - ChiSquared::new(1.0).unwrap().sf(40.0)).abs() < 1e-20);
+        // Unequal cells: E = (250, 750); χ² = 50²/250 + 50²/750 = 13.33…, zero-probability
+        // cells are left out of the dof.
+        let c = chi_square(&[300, 700, 0], &[0.25, 0.75, 0.0]);
+        assert!((c.statistic - 40.0 / 3.0).abs() < 1e-12, "{}", c.statistic);
+        assert_eq!(c.dof, 1);
+        assert_eq!(bonferroni(1e-3, 4), 2.5e-4);
+        assert_eq!(bonferroni(1e-3, 0), 1e-3);
+    }
+
+    #[test]
     fn impossible_cells_give_p_zero() {
         assert_eq!(chi_square(&[5, 1], &[1.0, 0.0]).p_value, 0.0);
         assert_eq!(chi_square(&[5, 0], &[1.0, 0.0]).p_value, 1.0);
