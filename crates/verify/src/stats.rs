@@ -132,8 +132,12 @@ pub fn min_detectable_w(dof: usize, n: u64, alpha: f64) -> f64 {
         .expect("dof ≥ 1")
         .inverse_cdf(1.0 - alpha);
     let (mut lo, mut hi) = (0.0f64, 1.0f64);
+    // The power grows with λ; past 2^50 nothing is detectable at this size (a safeguard).
     while noncentral_chi_square_sf(critical, dof, hi) < POWER {
         hi *= 2.0;
+        if hi > 1e15 {
+            return f64::INFINITY;
+        }
     }
     for _ in 0..60 {
         let mid = 0.5 * (lo + hi);
