@@ -94,7 +94,8 @@ pub fn noncentral_chi_square_sf(x: f64, dof: usize, lambda: f64) -> f64 {
     loop {
         let t = term(j);
         total += t;
-        if t < 1e-14 && j > mode + 5 {
+        // Poisson weights fall off past the mode; 10^5 terms bound the loop whatever happens.
+        if (t < 1e-14 && j > mode + 5) || j > mode + 100_000 {
             break;
         }
         j += 1;
