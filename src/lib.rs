@@ -14,6 +14,8 @@ use gartowen_core::Registry;
 
 pub use gartowen_verify::{certificate, external};
 
+pub mod testing;
+
 /// The conformance battery (`gartowen verify`), from the `gartowen-verify` crate.
 pub mod verify {
     pub use gartowen_verify::battery::*;

@@ -1,6 +1,6 @@
 //! The one trait every scrambler implements, the exact oracle included.
 
-use crate::{word_to_f32, word_to_f64, Claim, PowerOfTwoBase, Width};
+use crate::{word_to_f32, word_to_f64, Claim, DigitLayout, PowerOfTwoBase, Width};
 
 /// A random bijection of W-bit words, applied per dimension, that claims to be (at least)
 /// a nested scramble in base 2^q.
@@ -97,4 +97,30 @@ impl Scrambler for Identity {
     fn unscramble(&self, y: u64, _width: Width, _dim: u32) -> u64 {
         y
     }
+}
+
+/// Inverts a nested scramble `f` in base `base` from its forward map alone, digit by digit
+/// (at most b evaluations per digit): the inverse for implementations that have none (external
+/// programs, user scramblers under test). Only right when `f` is nested; the battery checks
+/// that separately.
+///
+/// ```
+/// use gartowen_core::{invert_nested, PowerOfTwoBase, Width};
+/// let f = |x: u64| x ^ 0xA5A5_A5A5; // a digital shift is nested in every base
+/// assert_eq!(invert_nested(&f, 0x1234_5678 ^ 0xA5A5_A5A5, Width::W32, PowerOfTwoBase::B16), 0x1234_5678);
+/// ```
+pub fn invert_nested(f: &dyn Fn(u64) -> u64, y: u64, width: Width, base: PowerOfTwoBase) -> u64 {
+    let layout = DigitLayout::new(width, base);
+    let mut x = 0u64;
+    for k in 0..layout.num_digits() {
+        let want = layout.get(y, k);
+        for d in 0..(1u32 << layout.digit_bits(k)) {
+            let c = layout.set(x, k, d);
+            if layout.get(f(c), k) == want {
+                x = c;
+                break;
+            }
+        }
+    }
+    x
 }

@@ -683,18 +683,11 @@ impl Scrambler for ExternalScrambler {
     /// The protocol has no inverse; verify checks injectivity instead. This search inverts a
     /// nested scramble digit by digit (b requests per digit) and is only right for nested ones.
     fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
-        let layout = gartowen_core::DigitLayout::new(width, self.process.base);
-        let mut x = 0u64;
-        for k in 0..layout.num_digits() {
-            let want = layout.get(y, k);
-            for d in 0..(1u32 << layout.digit_bits(k)) {
-                let c = layout.set(x, k, d);
-                if layout.get(self.scramble(c, width, dim), k) == want {
-                    x = c;
-                    break;
-                }
-            }
-        }
-        x
+        gartowen_core::invert_nested(
+            &|x| self.scramble(x, width, dim),
+            y,
+            width,
+            self.process.base,
+        )
     }
 }
