@@ -60,7 +60,7 @@ fn inspector_reconstruction_equals_node_permutation_queries() {
 fn batch_mode_equals_single_queries() {
     // 5000 random words visit about 5000 × 32 distinct nodes in base 2, more than the cache
     // holds (MAX_CACHED_NODES), so the bounded cache starts over mid-batch.
-    assert!(5000 * 20 > gartowen_oracles::full_tree::MAX_CACHED_NODES);
+    const { assert!(5000 * 20 > gartowen_oracles::full_tree::MAX_CACHED_NODES) };
     for q in [1u32, 2, 4, 8] {
         let s = FullTreeOwen::new(base(q), OwenVariant::Uniform, 5);
         let xs: Vec<u64> = (0..5000u64).map(|i| mix64(i) & 0xFFFF_FFFF).collect();
