@@ -105,3 +105,15 @@ pub fn write_atomically(
 pub fn io_err(e: io::Error) -> CliError {
     CliError::Io(format!("write failed: {e}"))
 }
+
+/// Writes JUnit XML (`--junit`) atomically.
+pub fn write_junit(
+    path: &Path,
+    run: &str,
+    suites: &[gartowen::battery::junit::JunitSuite],
+) -> Result<(), CliError> {
+    let xml = gartowen::battery::junit::to_xml(run, suites);
+    write_atomically(Some(path), |out| {
+        out.write_all(xml.as_bytes()).map_err(io_err)
+    })
+}

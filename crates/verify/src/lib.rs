@@ -16,6 +16,7 @@ pub mod certificate;
 pub mod dimensions;
 pub mod external;
 pub mod joint;
+pub mod junit;
 pub mod law;
 pub mod laws;
 pub mod marginal;

@@ -58,6 +58,9 @@ pub struct CheckArgs {
     /// Print a JSON report on standard output.
     #[arg(long)]
     pub json: bool,
+    /// Also write JUnit XML: one testcase per projection checked.
+    #[arg(long)]
+    pub junit: Option<PathBuf>,
     /// Worker threads (results are identical for any count; default: all cores).
     #[arg(long)]
     pub threads: Option<usize>,
@@ -135,6 +138,13 @@ pub fn run(a: CheckArgs) -> Result<ExitCode, CliError> {
     } else {
         run_net(&a, base, &points, projections.as_deref())?
     };
+    if let Some(path) = &a.junit {
+        crate::output::write_junit(
+            path,
+            "gartowen check",
+            &[junit_suite(&a.file.display().to_string(), &result)],
+        )?;
+    }
     if a.json {
         let cert = Certificate::new(
             "check",
@@ -163,6 +173,42 @@ pub fn run(a: CheckArgs) -> Result<ExitCode, CliError> {
 }
 
 type Outcome = (bool, Value, String);
+
+/// A testcase per projection of a check result (one object, or a list for --projections): it
+/// fails where the net or sequence property does not hold; t-values alone are measurements.
+fn junit_suite(file: &str, result: &Value) -> gartowen::battery::junit::JunitSuite {
+    use gartowen::battery::junit::{JunitCase, JunitSuite};
+    let items: Vec<&Value> = match result {
+        Value::Array(list) => list.iter().collect(),
+        one => vec![one],
+    };
+    JunitSuite {
+        name: file.to_string(),
+        certificate: None,
+        cases: items
+            .iter()
+            .map(|v| {
+                let dims = v
+                    .get("projection")
+                    .map_or("all".to_string(), |p| p.to_string());
+                let holds = v.get("holds").and_then(Value::as_bool);
+                JunitCase {
+                    name: format!("dims {dims}"),
+                    failure: (holds == Some(false)).then(|| {
+                        (
+                            format!("dims {dims}: the property fails"),
+                            v.get("first_failure")
+                                .map_or(String::new(), |f| f.to_string()),
+                        )
+                    }),
+                    skipped: false,
+                    output: v.to_string(),
+                    seconds: 0.0,
+                }
+            })
+            .collect(),
+    }
+}
 
 /// The sets to check: the whole set, or each requested projection with its dimensions.
 fn targets(

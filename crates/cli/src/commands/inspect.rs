@@ -74,6 +74,9 @@ pub struct InspectArgs {
     /// Print the report as JSON.
     #[arg(long)]
     pub json: bool,
+    /// Also write JUnit XML: a testcase for nestedness and one per law check.
+    #[arg(long)]
+    pub junit: Option<std::path::PathBuf>,
 }
 
 fn text(r: &InspectReport, name: &str) -> String {
@@ -260,6 +263,49 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
                 println!("        {}", c.detail);
             }
         }
+    }
+    if let Some(path) = &a.junit {
+        use gartowen::battery::junit::{JunitCase, JunitSuite};
+        let mut cases = vec![JunitCase {
+            name: format!("nested in base {}", base.base()),
+            failure: report.first_violation.as_ref().map(|v| {
+                (
+                    format!("not a nested scramble: {:?} at depth {}", v.kind, v.depth),
+                    format!(
+                        "prefix {:#x}: inputs {:#x}, {:#x} -> outputs {:#x}, {:#x}",
+                        v.prefix, v.inputs[0], v.inputs[1], v.outputs[0], v.outputs[1]
+                    ),
+                )
+            }),
+            skipped: false,
+            output: format!(
+                "{} evaluations, {} nodes",
+                report.evaluations, report.nodes_checked
+            ),
+            seconds: 0.0,
+        }];
+        if let Some((claim, checks)) = &laws {
+            let fake = gartowen::verify::ImplReport {
+                index: 0,
+                name: s.name(),
+                base: base.base(),
+                claims_nested_uniform: claim.is_owen(),
+                claim: claim.to_string(),
+                checks: checks.clone(),
+                profile: Vec::new(),
+            };
+            cases.extend(
+                gartowen::battery::junit::verify_suites(&[fake], None)
+                    .remove(0)
+                    .cases,
+            );
+        }
+        let suite = JunitSuite {
+            name: s.name(),
+            cases,
+            certificate: None,
+        };
+        crate::output::write_junit(path, "gartowen inspect", &[suite])?;
     }
     let laws_failed = laws.as_ref().is_some_and(|(_, checks)| {
         checks

@@ -95,6 +95,9 @@ pub struct VerifyArgs {
     /// The external program does not claim any law (same as --claim nested).
     #[arg(long, requires = "external", conflicts_with = "claim")]
     pub no_uniform_claim: bool,
+    /// Also write JUnit XML (one testsuite per implementation, one testcase per check).
+    #[arg(long)]
+    pub junit: Option<PathBuf>,
     /// Judge on this claim instead of each implementation's own: nested | owen |
     /// marginal[:GROUP] | independent:GROUP (GROUP: symmetric, affine, translation, cyclic).
     /// External programs default to owen.
@@ -291,6 +294,11 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
     };
     print_table(&reports);
     let failed = reports.iter().filter(|r| r.failed()).count();
+    if let Some(path) = &a.junit {
+        let certificate = a.json.as_ref().map(|p| p.display().to_string());
+        let suites = gartowen::battery::junit::verify_suites(&reports, certificate.as_deref());
+        crate::output::write_junit(path, "gartowen verify", &suites)?;
+    }
     println!(
         "{} implementations, {failed} with failures ({} level)",
         reports.len(),
