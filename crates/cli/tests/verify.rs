@@ -142,17 +142,10 @@ fn merged_shards_equal_one_unsharded_run() {
     ]);
     assert_eq!(o.status.code(), Some(0));
     // Equal up to the timings.
-    let strip = |file: &str| {
-        let mut v: serde_json::Value =
-            serde_json::from_str(&std::fs::read_to_string(path(file)).unwrap()).unwrap();
-        for imp in v["result"]["implementations"].as_array_mut().unwrap() {
-            for c in imp["checks"].as_array_mut().unwrap() {
-                c["seconds"] = serde_json::Value::Null;
-            }
-        }
-        v
-    };
-    assert_eq!(strip("merged.json"), strip("all.json"));
+    assert_eq!(
+        without_timings(&path("merged.json")),
+        without_timings(&path("all.json"))
+    );
     // A missing or duplicated shard is a usage error.
     let missing = gartowen(&["verify", "--merge", &path("s1.json"), &path("s2.json")]);
     assert_eq!(missing.status.code(), Some(2));
@@ -176,6 +169,67 @@ fn merged_shards_equal_one_unsharded_run() {
 }
 
 /// Compiles one of the C examples under examples/external into `dir`.
+/// A verify certificate with its `seconds` fields cleared.
+fn without_timings(file: &str) -> serde_json::Value {
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(file).unwrap()).unwrap();
+    for imp in v["result"]["implementations"].as_array_mut().unwrap() {
+        for c in imp["checks"].as_array_mut().unwrap() {
+            c["seconds"] = serde_json::Value::Null;
+        }
+    }
+    v
+}
+
+#[test]
+fn shard_local_script_merges_four_shards_into_the_unsharded_certificate() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("shards");
+    let script = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../examples/ci/shard-local.sh"
+    );
+    let impls = [
+        "--impl",
+        "none",
+        "--impl",
+        "art-owen-2",
+        "--impl",
+        "lk-hash",
+        "--impl",
+        "owen-per-bit-hash",
+        "--impl",
+        "digital-shift",
+        "--impl",
+        "q-art-4",
+    ];
+    let o = Command::new("bash")
+        .arg(script)
+        .args(["4", out.to_str().unwrap()])
+        .args(impls)
+        .env("GARTOWEN", env!("CARGO_BIN_EXE_gartowen"))
+        .output()
+        .unwrap();
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}{}",
+        String::from_utf8_lossy(&o.stdout),
+        String::from_utf8_lossy(&o.stderr)
+    );
+    for i in 1..=4 {
+        assert!(out.join(format!("shard{i}.json")).exists());
+    }
+    let all = dir.path().join("all.json");
+    let mut args = vec!["verify", "--json", all.to_str().unwrap()];
+    args.extend(impls);
+    assert!(gartowen(&args).status.success());
+    assert_eq!(
+        without_timings(out.join("merged.json").to_str().unwrap()),
+        without_timings(all.to_str().unwrap())
+    );
+}
+
 fn build_example(dir: &std::path::Path, name: &str) -> String {
     let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../../examples/external")
@@ -319,4 +373,39 @@ fn inspect_runs_the_laws_on_an_external_program() {
         "{}",
         String::from_utf8_lossy(&o.stdout)
     );
+}
+
+#[test]
+fn a_program_that_starts_and_fails_exits_3_with_its_certificate_written() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = tempfile::tempdir().unwrap();
+    let script = dir.path().join("dies.sh");
+    std::fs::write(&script, "#!/bin/sh\necho 'out of coffee' >&2\nexit 7\n").unwrap();
+    std::fs::set_permissions(&script, std::fs::Permissions::from_mode(0o755)).unwrap();
+    let cert = dir.path().join("c.json");
+    let o = gartowen(&[
+        "verify",
+        "--external",
+        script.to_str().unwrap(),
+        "--json",
+        cert.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(3));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("external program failed") && err.contains("out of coffee"),
+        "{err}"
+    );
+    let v: serde_json::Value = serde_json::from_slice(&std::fs::read(&cert).unwrap()).unwrap();
+    assert_eq!(v["verdict"], "fail");
+    let o = gartowen(&[
+        "inspect",
+        "--external",
+        script.to_str().unwrap(),
+        "--base",
+        "2",
+        "--width",
+        "32",
+    ]);
+    assert_eq!(o.status.code(), Some(3));
 }

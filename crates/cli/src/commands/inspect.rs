@@ -200,7 +200,7 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
     };
     let external_failure = || process.as_ref().and_then(|p| p.failure());
     if let Some(e) = external_failure() {
-        return Err(CliError::Usage(format!("external program failed: {e}")));
+        return Err(CliError::External(e.to_string()));
     }
     let laws = if a.laws {
         let claim = match (&a.claim, &a.external) {
@@ -224,7 +224,7 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
         };
         let families = run_laws(&c, Level::Quick, 0).map_err(CliError::Usage)?;
         if let Some(e) = external_failure() {
-            return Err(CliError::Usage(format!("external program failed: {e}")));
+            return Err(CliError::External(e.to_string()));
         }
         Some((claim, judge_families(families, claim, 1, 0.0)))
     } else {

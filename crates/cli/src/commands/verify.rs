@@ -43,7 +43,8 @@ pub enum LevelArg {
 /// detects) is in the JSON. The profile line shows, per family and depth 0, 1, 2, …, where an
 /// implementation departs from Owen: `.` nothing detected, `x` deviation, `-` not tested.
 ///
-/// Prints a table (implementation × check) and exits 1 if any check fails, 2 on bad usage.
+/// Prints a table (implementation × check). Exit codes: 0 every check passed, 1 a check
+/// failed, 2 bad usage or input, 3 the external program failed (crash, exit, hang, garbage).
 ///
 /// Examples:
 ///   gartowen verify --level quick
@@ -173,7 +174,12 @@ fn registry_inputs(reports: &[ImplReport]) -> Vec<InputRecord> {
 }
 
 /// Runs the battery on an external program.
-fn run_external(a: &VerifyArgs, command: &str, level: Level) -> Result<ImplReport, CliError> {
+/// The report, and the program's failure if it failed during the run.
+fn run_external(
+    a: &VerifyArgs,
+    command: &str,
+    level: Level,
+) -> Result<(ImplReport, Option<String>), CliError> {
     let base = PowerOfTwoBase::from_base(a.base)
         .map_err(|e| CliError::Usage(format!("--base {}: {e}", a.base)))?;
     let width = match a.width {
@@ -217,13 +223,15 @@ fn run_external(a: &VerifyArgs, command: &str, level: Level) -> Result<ImplRepor
     } else {
         parse_claim(&a.claim)?.unwrap_or(Claim::OWEN)
     };
+    let process = Arc::new(process);
     let candidate = external_candidate(
-        Arc::new(process),
+        process.clone(),
         a.seed,
         claim,
         a.expect.as_deref().map(|n| (&registry, n)),
     );
-    Ok(check_candidate(&candidate, level, 1))
+    let report = check_candidate(&candidate, level, 1);
+    Ok((report, process.failure().map(|e| e.to_string())))
 }
 
 /// The certificate's record of an external program: its command line and, where the program
@@ -251,12 +259,14 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
         LevelArg::Full => Level::Full,
         LevelArg::Exhaustive => Level::Exhaustive,
     };
+    let mut external_failure = None;
     let (level, reports, inputs) = if !a.merge.is_empty() {
         let (level, reports) = merged(&a.merge)?;
         let inputs = registry_inputs(&reports);
         (level, reports, inputs)
     } else if let Some(command) = &a.external {
-        let report = run_external(&a, command, level)?;
+        let (report, failure) = run_external(&a, command, level)?;
+        external_failure = failure;
         (level, vec![report], vec![program_record(command)])
     } else {
         let shard = match &a.shard {
@@ -335,11 +345,16 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
                 .map_err(|e| CliError::Io(e.to_string()))
         })?;
     }
-    Ok(if failed == 0 {
-        ExitCode::SUCCESS
+    if let Some(e) = external_failure {
+        // The report and certificate are written (every check names the failure); the exit
+        // code tells a broken program from a failed check.
+        return Err(CliError::External(e));
+    }
+    Ok(ExitCode::from(if failed == 0 {
+        crate::error::EXIT_PASS
     } else {
-        ExitCode::from(1)
-    })
+        crate::error::EXIT_FAIL
+    }))
 }
 
 /// The verdict table: one row per implementation, one column per check, then the failures
