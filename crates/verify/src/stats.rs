@@ -220,6 +220,12 @@ mod tests {
     }
 
     #[test]
+    fn nothing_is_detectable_without_cells_or_observations() {
+        assert_eq!(min_detectable_w(0, 1000, 0.05), f64::INFINITY);
+        assert_eq!(min_detectable_w(3, 0, 0.05), f64::INFINITY);
+    }
+
+    #[test]
     fn detectable_effect_shrinks_with_the_sample() {
         let a = min_detectable_w(15, 1000, 1e-5);
         let b = min_detectable_w(15, 4000, 1e-5);
