@@ -334,6 +334,10 @@ pub struct CollisionPlan {
     pub log2_pair_probability: f64,
 }
 
+/// Words scrambled per depth and seed by the collision test (bounds its memory: seeds are
+/// evaluated two at a time).
+pub const COLLISION_WORDS_PER_DEPTH: u64 = 1 << 19;
+
 /// Plans the collision test, or None when no subtree height makes collisions rare enough
 /// within 4096 words per node.
 pub fn collision_plan(cfg: &LawConfig) -> Option<CollisionPlan> {
@@ -352,6 +356,8 @@ pub fn collision_plan(cfg: &LawConfig) -> Option<CollisionPlan> {
     })?;
     let log2_pair_probability =
         (height * q) as f64 - ((b.pow(height) - 1) / (b - 1)) as f64 * log2_group;
+    // Memory: at most COLLISION_WORDS_PER_DEPTH words per depth and seed.
+    let nodes_cap = nodes_cap.min(((COLLISION_WORDS_PER_DEPTH / b.pow(height)) as usize).max(2));
     let mut rng = SplitMix64::new(COLLISION_SEED);
     let last = (tree.full_digits() - height).min(*cfg.depths().end());
     let depths = (1..=last)
@@ -409,16 +415,17 @@ pub fn collision_probes(cfg: &LawConfig, plan: &CollisionPlan) -> Vec<Probe> {
         .collect()
 }
 
-/// Collision counts per depth against the Poisson law of independent subtrees.
-pub fn collision_analyse(
+/// Per depth: the number of equal normalized subtrees among the plan's nodes, summed over the
+/// seeds in `outputs`, and the first node found in a collision.
+pub fn collision_counts(
     cfg: &LawConfig,
     plan: &CollisionPlan,
     outputs: &[&[Vec<u64>]],
-) -> Vec<SubTest> {
+) -> Vec<(u64, Option<String>)> {
     let tree = &cfg.tree;
     let h = plan.height;
     let mut probe = 0usize;
-    let mut tests = Vec::new();
+    let mut counts = Vec::new();
     for (k, prefixes) in &plan.depths {
         let mut collisions = 0u64;
         let mut example = None;
@@ -441,25 +448,51 @@ pub fn collision_analyse(
             }
         }
         probe += prefixes.len();
-        let nodes = prefixes.len() as f64;
-        let lambda =
-            plan.seeds as f64 * nodes * (nodes - 1.0) / 2.0 * plan.log2_pair_probability.exp2();
-        tests.push(SubTest {
-            name: format!(
-                "depth {k}: {collisions} equal height-{h} subtrees among {} nodes × {} seeds (Owen: {lambda:.1e}){}",
-                prefixes.len(),
-                plan.seeds,
-                example.map_or(String::new(), |e| format!(", e.g. under node {e}"))
-            ),
-            depth: Some(*k),
-            requires: Requirement::Independent,
-            statistic: collisions as f64,
-            p_value: poisson_sf(collisions, lambda),
-            n: prefixes.len() as u64 * plan.seeds,
-            dof: None,
-            power: "detects any two tested nodes whose subtrees coincide up to a translation".into(),
-            deviates: false,
-        });
+        counts.push((collisions, example));
     }
-    tests
+    counts
+}
+
+/// Adds the counts of another chunk of seeds.
+pub fn add_collision_counts(total: &mut [(u64, Option<String>)], more: Vec<(u64, Option<String>)>) {
+    for (t, (c, e)) in total.iter_mut().zip(more) {
+        t.0 += c;
+        if t.1.is_none() {
+            t.1 = e;
+        }
+    }
+}
+
+/// Collision counts per depth (over all the plan's seeds) against the Poisson law of
+/// independent subtrees.
+pub fn collision_tests(plan: &CollisionPlan, counts: &[(u64, Option<String>)]) -> Vec<SubTest> {
+    let h = plan.height;
+    plan.depths
+        .iter()
+        .zip(counts)
+        .map(|((k, prefixes), (collisions, example))| {
+            let nodes = prefixes.len() as f64;
+            let lambda = plan.seeds as f64 * nodes * (nodes - 1.0) / 2.0
+                * plan.log2_pair_probability.exp2();
+            SubTest {
+                name: format!(
+                    "depth {k}: {collisions} equal height-{h} subtrees among {} nodes × {} seeds (Owen: {lambda:.1e}){}",
+                    prefixes.len(),
+                    plan.seeds,
+                    example
+                        .as_ref()
+                        .map_or(String::new(), |e| format!(", e.g. under node {e}"))
+                ),
+                depth: Some(*k),
+                requires: Requirement::Independent,
+                statistic: *collisions as f64,
+                p_value: poisson_sf(*collisions, lambda),
+                n: prefixes.len() as u64 * plan.seeds,
+                dof: None,
+                power: "detects any two tested nodes whose subtrees coincide up to a translation"
+                    .into(),
+                deviates: false,
+            }
+        })
+        .collect()
 }

@@ -86,9 +86,23 @@ pub fn run_laws(
     let collisions = match joint::collision_plan(&cfg) {
         None => Vec::new(),
         Some(plan) => {
-            let probes = joint::collision_probes(&cfg, &plan);
-            let out = evaluate(c.with_seed.as_ref(), width, seed_base, &probes)?;
-            joint::collision_analyse(&cfg, &plan, &slice(&out, 0, probes.len(), plan.seeds))
+            // Two seeds at a time (one per core), so memory stays at two seeds' subtrees.
+            let mut probes = joint::collision_probes(&cfg, &plan);
+            let mut totals = vec![(0u64, None); plan.depths.len()];
+            for first in (0..plan.seeds).step_by(2) {
+                let chunk = (plan.seeds - first).min(2);
+                probes.iter_mut().for_each(|p| p.seeds = chunk);
+                let out = evaluate(
+                    c.with_seed.as_ref(),
+                    width,
+                    seed_base.wrapping_add(first),
+                    &probes,
+                )?;
+                let counts =
+                    joint::collision_counts(&cfg, &plan, &slice(&out, 0, probes.len(), chunk));
+                joint::add_collision_counts(&mut totals, counts);
+            }
+            joint::collision_tests(&plan, &totals)
         }
     };
     let distinct = dimensions::distinct_probes(&cfg);
