@@ -114,6 +114,31 @@ impl Scrambler for LkHash {
     }
 }
 
+/// Flips bit k (k = 0 the most significant of `width`) of `x` when `flip(k, prefix)` is 1,
+/// prefix being the top k bits of the input: a binary nested scramble given by its flips.
+#[inline]
+fn apply_bit_flips(x: u64, width: Width, flip: impl Fn(u32, u64) -> u64) -> u64 {
+    let w = width.bits();
+    let mut y = x;
+    for k in 0..w {
+        let prefix = if k == 0 { 0 } else { x >> (w - k) };
+        y ^= flip(k, prefix) << (w - 1 - k);
+    }
+    y
+}
+
+/// The inverse of [`apply_bit_flips`]: recovers the input bits from the top, each prefix first.
+#[inline]
+fn invert_bit_flips(y: u64, width: Width, flip: impl Fn(u32, u64) -> u64) -> u64 {
+    let w = width.bits();
+    let mut x = 0u64;
+    for k in 0..w {
+        let prefix = if k == 0 { 0 } else { x >> (w - k) };
+        x |= (((y >> (w - 1 - k)) & 1) ^ flip(k, prefix)) << (w - 1 - k);
+    }
+    x
+}
+
 /// A per-bit hashed binary Owen scramble: bit k flips iff the low bit of
 /// mix64(dim_key ⊕ mix64((k << 58) ⊕ prefix_k)) is set, where prefix_k is the input's top k bits.
 #[derive(Debug, Clone)]
@@ -144,25 +169,12 @@ impl Scrambler for PerBitOwen {
         Claim::OWEN
     }
     fn scramble(&self, x: u64, width: Width, dim: u32) -> u64 {
-        let w = width.bits();
         let key = hash_words(&[self.seed, dim as u64]);
-        let mut y = x;
-        for k in 0..w {
-            let prefix = if k == 0 { 0 } else { x >> (w - k) };
-            y ^= Self::flip(key, k, prefix) << (w - 1 - k);
-        }
-        y
+        apply_bit_flips(x, width, |k, prefix| Self::flip(key, k, prefix))
     }
     fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
-        let w = width.bits();
         let key = hash_words(&[self.seed, dim as u64]);
-        let mut x = 0u64;
-        for k in 0..w {
-            let prefix = if k == 0 { 0 } else { x >> (w - k) };
-            let bit = ((y >> (w - 1 - k)) & 1) ^ Self::flip(key, k, prefix);
-            x |= bit << (w - 1 - k);
-        }
-        x
+        invert_bit_flips(y, width, |k, prefix| Self::flip(key, k, prefix))
     }
 }
 
@@ -244,22 +256,9 @@ impl Scrambler for LinearMatrixScramble {
         Claim::marginal(NodeGroup::Translation)
     }
     fn scramble(&self, x: u64, width: Width, dim: u32) -> u64 {
-        let w = width.bits();
-        let mut y = x;
-        for k in 0..w {
-            let prefix = if k == 0 { 0 } else { x >> (w - k) };
-            y ^= self.flip(dim, k, prefix) << (w - 1 - k);
-        }
-        y
+        apply_bit_flips(x, width, |k, prefix| self.flip(dim, k, prefix))
     }
     fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
-        let w = width.bits();
-        let mut x = 0u64;
-        for k in 0..w {
-            let prefix = if k == 0 { 0 } else { x >> (w - k) };
-            let bit = ((y >> (w - 1 - k)) & 1) ^ self.flip(dim, k, prefix);
-            x |= bit << (w - 1 - k);
-        }
-        x
+        invert_bit_flips(y, width, |k, prefix| self.flip(dim, k, prefix))
     }
 }
