@@ -200,8 +200,11 @@ fn read_hex(path: &Path, bytes: &[u8]) -> Result<PointSet, CliError> {
                 }
                 _ => {}
             }
-            let w = u64::from_str_radix(tok, 16)
-                .map_err(|_| bad(path, format!("line {line_no}: '{tok}' is not hexadecimal")))?;
+            // from_str_radix alone would take a leading '+' ("+0000001").
+            let w = Some(tok)
+                .filter(|t| t.bytes().all(|c| c.is_ascii_hexdigit()))
+                .and_then(|t| u64::from_str_radix(t, 16).ok())
+                .ok_or_else(|| bad(path, format!("line {line_no}: '{tok}' is not hexadecimal")))?;
             words.push(w);
         }
     }
@@ -220,6 +223,26 @@ fn read_hex(path: &Path, bytes: &[u8]) -> Result<PointSet, CliError> {
 mod fuzz {
     use super::*;
     use proptest::prelude::*;
+
+    #[test]
+    fn signed_hex_words_are_refused() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("signed.hex");
+        for (text, ok) in [
+            ("00000001 00000002\n", true),
+            ("+0000001 00000002\n", false),
+            ("00000001 -0000002\n", false),
+        ] {
+            std::fs::write(&path, text).unwrap();
+            match read_points(&path, InputFormat::Hex) {
+                Ok(p) => assert!(ok, "{text} was read: {:?}", p.point(0)),
+                Err(e) => {
+                    assert!(!ok, "{text}: {e}");
+                    assert!(e.to_string().contains("is not hexadecimal"), "{e}");
+                }
+            }
+        }
+    }
 
     fn npy_header(descr: &str, fortran: bool, shape: &str) -> Vec<u8> {
         let dict = format!(

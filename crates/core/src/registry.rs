@@ -22,6 +22,8 @@ impl ScramblerRequest {
     /// let r = ScramblerRequest::parse("art-owen-16p:table=256").unwrap();
     /// assert_eq!(r.name, "art-owen-16p");
     /// assert_eq!(r.option("table"), Some("256"));
+    /// // An option given twice is refused rather than letting the last one win.
+    /// assert!(ScramblerRequest::parse("owen-oracle:base=4:base=8").is_err());
     /// ```
     pub fn parse(text: &str) -> Result<Self, CoreError> {
         let mut parts = text.split(':');
@@ -43,6 +45,13 @@ impl ScramblerRequest {
                     scrambler: name,
                     option: part.to_string(),
                     reason: "empty option".into(),
+                });
+            }
+            if options.iter().any(|(seen, _)| *seen == k) {
+                return Err(CoreError::InvalidOption {
+                    scrambler: name,
+                    option: k,
+                    reason: "given twice".into(),
                 });
             }
             options.push((k, v));
