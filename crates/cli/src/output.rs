@@ -117,3 +117,28 @@ pub fn write_junit(
         out.write_all(xml.as_bytes()).map_err(io_err)
     })
 }
+
+/// Writes `text` to standard output and flushes it: a full disk or a closed pipe is an error
+/// with a message (exit 2), never a panic as `println!` would give.
+pub fn emit(text: &str) -> Result<(), CliError> {
+    let mut out = io::stdout().lock();
+    out.write_all(text.as_bytes())
+        .and_then(|()| out.flush())
+        .map_err(|e| CliError::Io(format!("cannot write to standard output: {e}")))
+}
+
+/// `println!` that returns a [`CliError`] from the enclosing function instead of panicking.
+#[macro_export]
+macro_rules! outln {
+    ($($arg:tt)*) => {
+        $crate::output::emit(&format!("{}\n", format_args!($($arg)*)))?
+    };
+}
+
+/// `print!` that returns a [`CliError`] from the enclosing function instead of panicking.
+#[macro_export]
+macro_rules! out {
+    ($($arg:tt)*) => {
+        $crate::output::emit(&format!($($arg)*))?
+    };
+}

@@ -161,9 +161,9 @@ pub fn run(a: CheckArgs) -> Result<ExitCode, CliError> {
             vec![input],
             result,
         );
-        println!("{}", cert.to_json());
+        crate::outln!("{}", cert.to_json());
     } else {
-        print!("{text}");
+        crate::out!("{text}");
     }
     Ok(if holds {
         ExitCode::SUCCESS

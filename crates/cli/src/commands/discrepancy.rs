@@ -160,10 +160,10 @@ pub fn run(a: DiscrepancyArgs) -> Result<ExitCode, CliError> {
             vec![crate::input::file_record(&a.file, &set)],
             result,
         );
-        println!("{}", doc.to_json());
+        crate::outln!("{}", doc.to_json());
     } else {
         let label = if a.root { "D" } else { "D^2" };
-        println!(
+        crate::outln!(
             "{} {label} = {:.17e} ({:?}, {n} points, {d} dims, {:.3} s{})",
             kind.name(),
             if a.root {
@@ -178,7 +178,7 @@ pub fn run(a: DiscrepancyArgs) -> Result<ExitCode, CliError> {
                 .map_or(String::new(), |b| format!(", rel. error ≤ {b:.1e}"))
         );
         for p in &pair_reports {
-            println!(
+            crate::outln!(
                 "  pair {}: {label} = {:.17e}",
                 p["pair"],
                 p["value"].as_f64().unwrap_or(f64::NAN)

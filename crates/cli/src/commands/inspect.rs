@@ -240,11 +240,11 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
             doc["laws"] = serde_json::json!(checks);
             doc["profile"] = serde_json::json!(gartowen::verify::profile(checks));
         }
-        println!("{}", serde_json::to_string_pretty(&doc).expect("json"));
+        crate::outln!("{}", serde_json::to_string_pretty(&doc).expect("json"));
     } else {
-        print!("{}", text(&report, &s.name()));
+        crate::out!("{}", text(&report, &s.name()));
         if let Some((claim, checks)) = &laws {
-            println!(
+            crate::outln!(
                 "  laws over seeds 0, 1, 2, … ({}-bit words, dimension 0; dimensions 0..64 for \
                  `dimensions`) judged as {claim} (family-wise α = 1e-3):",
                 if s.supports_width(Width::W32) { 32 } else { 64 }
@@ -255,12 +255,12 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
                     .iter()
                     .find(|(f, _)| *f == c.check)
                     .map_or("", |(_, r)| r.as_str());
-                println!(
+                crate::outln!(
                     "    {:<11} {:<9} depth 0→ {row}",
                     c.check,
                     format!("{:?}", c.verdict).to_lowercase()
                 );
-                println!("        {}", c.detail);
+                crate::outln!("        {}", c.detail);
             }
         }
     }

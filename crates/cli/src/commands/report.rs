@@ -79,7 +79,7 @@ pub fn run(a: ReportArgs) -> Result<ExitCode, CliError> {
     let regressions =
         write_report(&report, &registry, &a.out, baseline.as_ref()).map_err(cli_error)?;
     let misses = report.missed_slopes();
-    println!(
+    crate::outln!(
         "report in {} ({} methods, {:.1} s); scrambled methods missing the predicted slope: {}",
         a.out.display(),
         report.methods.len(),
@@ -91,9 +91,12 @@ pub fn run(a: ReportArgs) -> Result<ExitCode, CliError> {
         }
     );
     for r in &regressions {
-        println!(
+        crate::outln!(
             "REGRESSION {}: {:.4e} -> {:.4e} ({})",
-            r.what, r.before, r.after, r.rule
+            r.what,
+            r.before,
+            r.after,
+            r.rule
         );
     }
     Ok(if regressions.is_empty() {

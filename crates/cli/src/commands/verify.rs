@@ -302,14 +302,14 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
         let inputs = registry_inputs(&reports);
         (level, reports, inputs)
     };
-    print_table(&reports);
+    print_table(&reports)?;
     let failed = reports.iter().filter(|r| r.failed()).count();
     if let Some(path) = &a.junit {
         let certificate = a.json.as_ref().map(|p| p.display().to_string());
         let suites = gartowen::battery::junit::verify_suites(&reports, certificate.as_deref());
         crate::output::write_junit(path, "gartowen verify", &suites)?;
     }
-    println!(
+    crate::outln!(
         "{} implementations, {failed} with failures ({} level)",
         reports.len(),
         level_name(level)
@@ -359,16 +359,16 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
 
 /// The verdict table: one row per implementation, one column per check, then the failures
 /// and the per-depth profile of the law checks.
-fn print_table(reports: &[ImplReport]) {
+fn print_table(reports: &[ImplReport]) -> Result<(), CliError> {
     let Some(first) = reports.first() else {
-        return;
+        return Ok(());
     };
     let names: Vec<&str> = first.checks.iter().map(|c| c.check.as_str()).collect();
     let mut header = format!("{:<26} {:<22}", "implementation", "claim");
     for n in &names {
         header.push_str(&format!(" {n:<11}"));
     }
-    println!("{}", header.trim_end());
+    crate::outln!("{}", header.trim_end());
     for r in reports {
         let mut row = format!("{:<26} {:<22}", r.name, r.claim);
         for c in &r.checks {
@@ -380,9 +380,9 @@ fn print_table(reports: &[ImplReport]) {
             };
             row.push_str(&format!(" {v:<11}"));
         }
-        println!("{}", row.trim_end());
+        crate::outln!("{}", row.trim_end());
         for c in r.checks.iter().filter(|c| c.verdict == Verdict::Fail) {
-            println!("    FAIL {}: {}", c.check, c.detail);
+            crate::outln!("    FAIL {}: {}", c.check, c.detail);
         }
         if !r.profile.is_empty() {
             let cells: Vec<String> = r
@@ -390,12 +390,13 @@ fn print_table(reports: &[ImplReport]) {
                 .iter()
                 .map(|(family, row)| format!("{family} {row}"))
                 .collect();
-            println!("    profile (depth 0→): {}", cells.join("  "));
+            crate::outln!("    profile (depth 0→): {}", cells.join("  "));
         }
     }
-    println!(
+    crate::outln!(
         "law checks: family-wise α = {} (Bonferroni); pass = no deviation detected at the stated power; \
          profile: . none detected, x deviation, - not tested",
         gartowen::verify::stats::FAMILY_ALPHA
     );
+    Ok(())
 }
