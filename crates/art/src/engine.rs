@@ -224,13 +224,6 @@ impl ArtOwen {
         self.dim_key(dim).root
     }
 
-    /// The (input, output) shifts of dimension `dim`, top-aligned 64-bit words (a W-bit word
-    /// uses their top W bits). See the module doc.
-    pub fn dimension_shifts(&self, dim: u32) -> (u64, u64) {
-        let k = self.dim_key(dim);
-        (k.input_shift, k.output_shift)
-    }
-
     #[inline(always)]
     fn dim_key(&self, dim: u32) -> DimKey {
         match self.dims.get(dim as usize) {
@@ -334,23 +327,28 @@ impl ArtOwen {
         }
     }
 
-    #[inline]
-    fn run(&self, x: u64, width: Width, dim: u32, inverse: bool) -> u64 {
+    /// Root symbol, input shift and output shift of dimension `dim` for `width`-bit words.
+    #[inline(always)]
+    fn keys_at(&self, dim: u32, width: Width) -> (u32, u64, u64) {
         let k = self.dim_key(dim);
         let top = 64 - width.bits();
-        let (a, d) = (k.input_shift >> top, k.output_shift >> top);
+        (k.root, k.input_shift >> top, k.output_shift >> top)
+    }
+
+    #[inline]
+    fn run(&self, x: u64, width: Width, dim: u32, inverse: bool) -> u64 {
+        let (root, a, d) = self.keys_at(dim, width);
         if inverse {
-            self.run_from(x ^ d, width, k.root, true) ^ a
+            self.run_from(x ^ d, width, root, true) ^ a
         } else {
-            self.forward_fast(x ^ a, width, k.root) ^ d
+            self.forward_fast(x ^ a, width, root) ^ d
         }
     }
 
     /// The forward scramble by the plain digit-by-digit loop (the reference for the step table).
     pub fn scramble_digit_by_digit(&self, x: u64, width: Width, dim: u32) -> u64 {
-        let k = self.dim_key(dim);
-        let top = 64 - width.bits();
-        self.run_from(x ^ (k.input_shift >> top), width, k.root, false) ^ (k.output_shift >> top)
+        let (root, a, d) = self.keys_at(dim, width);
+        self.run_from(x ^ a, width, root, false) ^ d
     }
 
     /// The table's scramble (or its inverse) starting from root symbol `root`, without the
@@ -400,8 +398,7 @@ impl ArtOwen {
         let q = self.q();
         let layout = DigitLayout::new(width, PowerOfTwoBase::from_q(q).expect("q ≤ 8"));
         let top = 64 - width.bits();
-        let key = self.dim_key(dim);
-        let (a, dshift) = (key.input_shift >> top, key.output_shift >> top);
+        let (root, a, dshift) = self.keys_at(dim, width);
         // The inner (unshifted) tree is walked by the shifted prefix.
         let prefix_bits: u32 = (0..depth).map(|j| layout.digit_bits(j)).sum();
         let prefix = if prefix_bits == 0 {
@@ -410,7 +407,7 @@ impl ArtOwen {
             prefix ^ (a >> (width.bits() - prefix_bits))
         };
         let (a_k, d_k) = (layout.get(a, depth), layout.get(dshift, depth));
-        let mut s = key.root;
+        let mut s = root;
         let mut f = 0u64;
         for k in 0..=depth {
             f ^= self.codes[s as usize] >> (q * k);

@@ -16,7 +16,7 @@
 
 use crate::law::SubTest;
 use crate::sampling::SeedBuilder;
-use crate::stats::{min_detectable_w, FAMILY_ALPHA};
+use crate::stats::{bonferroni, min_detectable_w, FAMILY_ALPHA};
 use gartowen_core::{
     BuildContext, Claim, CoreError, PowerOfTwoBase, Registry, Scrambler, SplitMix64, Width,
 };
@@ -554,9 +554,9 @@ pub fn judge_families(
         .filter(|t| t.requires.claimed_by(claim))
         .count();
     let all_tests: usize = families.iter().map(|(_, t)| t.len()).sum();
-    let alpha = FAMILY_ALPHA / (judged.max(1) * claimed_tests.max(1)) as f64;
+    let alpha = bonferroni(FAMILY_ALPHA, judged.max(1) * claimed_tests.max(1));
     // Measured-only sub-tests are flagged at the level they would have had if claimed.
-    let measure_alpha = FAMILY_ALPHA / (judged.max(1) * all_tests.max(1)) as f64;
+    let measure_alpha = bonferroni(FAMILY_ALPHA, judged.max(1) * all_tests.max(1));
     families
         .into_iter()
         .map(|(family, mut tests)| {

@@ -3,7 +3,7 @@
 //! message and the measured value for each failing check, and the certificate's path in
 //! `<system-out>`. Written with the `quick-junit` crate.
 
-use crate::battery::{ImplReport, Verdict};
+use crate::battery::{CheckResult, ImplReport, Verdict};
 use quick_junit::{NonSuccessKind, Report, TestCase, TestCaseStatus, TestSuite};
 use std::time::Duration;
 
@@ -33,35 +33,39 @@ pub struct JunitSuite {
     pub certificate: Option<String>,
 }
 
-/// The suites of a verify run: a case per check (measured checks pass, with their value in
-/// `<system-out>`; skipped ones are skipped).
+/// A case per check (measured checks pass, with their value in `<system-out>`; skipped ones
+/// are skipped; a failure carries the measured value, p-value and level).
+pub fn check_cases(checks: &[CheckResult]) -> Vec<JunitCase> {
+    checks
+        .iter()
+        .map(|c| JunitCase {
+            name: c.check.clone(),
+            failure: (c.verdict == Verdict::Fail).then(|| {
+                (
+                    format!("{} failed: {}", c.check, c.detail),
+                    format!(
+                        "measured value: {}; p-value: {}; level: {}",
+                        c.value.map_or("none".into(), |v| format!("{v}")),
+                        c.p_value.map_or("none".into(), |v| format!("{v:e}")),
+                        c.alpha.map_or("none".into(), |v| format!("{v:e}")),
+                    ),
+                )
+            }),
+            skipped: c.verdict == Verdict::Skipped,
+            output: format!("{:?}: {}", c.verdict, c.detail),
+            seconds: c.seconds,
+        })
+        .collect()
+}
+
+/// The suites of a verify run: one per implementation, a case per check.
 pub fn verify_suites(reports: &[ImplReport], certificate: Option<&str>) -> Vec<JunitSuite> {
     reports
         .iter()
         .map(|r| JunitSuite {
             name: format!("{} (claim {})", r.name, r.claim),
             certificate: certificate.map(str::to_string),
-            cases: r
-                .checks
-                .iter()
-                .map(|c| JunitCase {
-                    name: c.check.clone(),
-                    failure: (c.verdict == Verdict::Fail).then(|| {
-                        (
-                            format!("{} failed: {}", c.check, c.detail),
-                            format!(
-                                "measured value: {}; p-value: {}; level: {}",
-                                c.value.map_or("none".into(), |v| format!("{v}")),
-                                c.p_value.map_or("none".into(), |v| format!("{v:e}")),
-                                c.alpha.map_or("none".into(), |v| format!("{v:e}")),
-                            ),
-                        )
-                    }),
-                    skipped: c.verdict == Verdict::Skipped,
-                    output: format!("{:?}: {}", c.verdict, c.detail),
-                    seconds: c.seconds,
-                })
-                .collect(),
+            cases: check_cases(&r.checks),
         })
         .collect()
 }

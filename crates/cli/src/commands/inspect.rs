@@ -9,7 +9,6 @@ use gartowen::oracles::inspector::{inspect_exhaustive, inspect_probes, InspectRe
 use gartowen::verify::{judge_families, laws::run_laws, Candidate, Level, SeedBuilder};
 use std::process::ExitCode;
 use std::sync::Arc;
-use std::time::Duration;
 
 /// Decide from black-box evaluations whether a scrambler is a nested scramble in base B.
 ///
@@ -118,26 +117,8 @@ fn builder<'a>(
     width: Width,
 ) -> Result<(Box<SeedBuilder<'a>>, Option<Arc<ExternalProcess>>), CliError> {
     if let Some(command) = &a.external {
-        if !(a.timeout.is_finite() && a.timeout > 0.0) {
-            return Err(CliError::Usage(format!(
-                "--timeout {} is not a positive number of seconds",
-                a.timeout
-            )));
-        }
-        if width != Width::W32 && width != Width::W64 {
-            return Err(CliError::Usage(format!(
-                "--width {}: the protocol carries 32- or 64-bit words",
-                width.bits()
-            )));
-        }
-        let p = Arc::new(
-            ExternalProcess::spawn(command, base, width, Duration::from_secs_f64(a.timeout))
-                .map_err(|e| CliError::Usage(e.to_string()))?,
-        );
-        let claim = match &a.claim {
-            Some(t) => Claim::parse(t).map_err(|e| CliError::Usage(format!("--claim: {e}")))?,
-            None => Claim::OWEN,
-        };
+        let p = Arc::new(super::spawn_external(command, base, width, a.timeout)?);
+        let claim = super::parse_claim(&a.claim)?.unwrap_or(Claim::OWEN);
         let shared = p.clone();
         Ok((
             Box::new(move |seed| {
@@ -203,13 +184,8 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
         return Err(CliError::External(e.to_string()));
     }
     let laws = if a.laws {
-        let claim = match (&a.claim, &a.external) {
-            (Some(t), _) => {
-                Claim::parse(t).map_err(|e| CliError::Usage(format!("--claim: {e}")))?
-            }
-            (None, Some(_)) => Claim::OWEN,
-            (None, None) => s.claim(),
-        };
+        // External programs report the claim given (default owen); registry entries their own.
+        let claim = super::parse_claim(&a.claim)?.unwrap_or_else(|| s.claim());
         let name = s.name();
         let probe = with_seed(a.seed).map_err(CliError::Usage)?;
         let c = Candidate {
@@ -284,21 +260,8 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
             ),
             seconds: 0.0,
         }];
-        if let Some((claim, checks)) = &laws {
-            let fake = gartowen::verify::ImplReport {
-                index: 0,
-                name: s.name(),
-                base: base.base(),
-                claims_nested_uniform: claim.is_owen(),
-                claim: claim.to_string(),
-                checks: checks.clone(),
-                profile: Vec::new(),
-            };
-            cases.extend(
-                gartowen::battery::junit::verify_suites(&[fake], None)
-                    .remove(0)
-                    .cases,
-            );
+        if let Some((_, checks)) = &laws {
+            cases.extend(gartowen::battery::junit::check_cases(checks));
         }
         let suite = JunitSuite {
             name: s.name(),

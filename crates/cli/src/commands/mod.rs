@@ -11,7 +11,8 @@ pub mod scramble;
 pub mod verify;
 
 use crate::CliError;
-use gartowen::core::Width;
+use gartowen::core::{Claim, PowerOfTwoBase, Width};
+use gartowen::external::ExternalProcess;
 
 /// The word width from `--bits` (32 or 64).
 pub fn width_from_bits(bits: u32) -> Result<Width, CliError> {
@@ -21,4 +22,39 @@ pub fn width_from_bits(bits: u32) -> Result<Width, CliError> {
             "--bits must be 32 or 64, not {bits}"
         ))),
     }
+}
+
+/// The `--claim` option, parsed (None when absent).
+pub fn parse_claim(text: &Option<String>) -> Result<Option<Claim>, CliError> {
+    text.as_deref()
+        .map(|t| Claim::parse(t).map_err(|e| CliError::Usage(format!("--claim {t}: {e}"))))
+        .transpose()
+}
+
+/// Starts an external program speaking the protocol, after checking the width (32 or 64 bits)
+/// and `--timeout` (finite, positive seconds).
+pub fn spawn_external(
+    command: &str,
+    base: PowerOfTwoBase,
+    width: Width,
+    timeout: f64,
+) -> Result<ExternalProcess, CliError> {
+    if width != Width::W32 && width != Width::W64 {
+        return Err(CliError::Usage(format!(
+            "--width {}: the protocol carries 32- or 64-bit words",
+            width.bits()
+        )));
+    }
+    if !(timeout.is_finite() && timeout > 0.0) {
+        return Err(CliError::Usage(format!(
+            "--timeout {timeout} is not a positive number of seconds"
+        )));
+    }
+    ExternalProcess::spawn(
+        command,
+        base,
+        width,
+        std::time::Duration::from_secs_f64(timeout),
+    )
+    .map_err(|e| CliError::Usage(e.to_string()))
 }

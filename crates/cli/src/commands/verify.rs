@@ -4,14 +4,12 @@ use crate::CliError;
 use clap::{Args, ValueEnum};
 use gartowen::certificate::{fnv1a64, CertVerdict, Certificate, InputRecord};
 use gartowen::core::{Claim, PowerOfTwoBase, Width};
-use gartowen::external::ExternalProcess;
 use gartowen::verify::{
     check_candidate, external_candidate, merge, verify_shard, ImplReport, Level, Shard, Verdict,
 };
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::sync::Arc;
-use std::time::Duration;
 
 /// Battery size.
 #[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
@@ -106,12 +104,6 @@ pub struct VerifyArgs {
     pub claim: Option<String>,
 }
 
-fn parse_claim(text: &Option<String>) -> Result<Option<Claim>, CliError> {
-    text.as_deref()
-        .map(|t| Claim::parse(t).map_err(|e| CliError::Usage(format!("--claim {t}: {e}"))))
-        .transpose()
-}
-
 fn level_name(level: Level) -> &'static str {
     match level {
         Level::Quick => "quick",
@@ -173,8 +165,8 @@ fn registry_inputs(reports: &[ImplReport]) -> Vec<InputRecord> {
         .collect()
 }
 
-/// Runs the battery on an external program.
-/// The report, and the program's failure if it failed during the run.
+/// Runs the battery on an external program: the report, and the program's failure if it
+/// failed during the run.
 fn run_external(
     a: &VerifyArgs,
     command: &str,
@@ -191,12 +183,6 @@ fn run_external(
             )))
         }
     };
-    if !(a.timeout.is_finite() && a.timeout > 0.0) {
-        return Err(CliError::Usage(format!(
-            "--timeout {} is not a positive number of seconds",
-            a.timeout
-        )));
-    }
     let registry = gartowen::registry();
     if let Some(name) = &a.expect {
         let twin = registry
@@ -216,12 +202,11 @@ fn run_external(
             )));
         }
     }
-    let process = ExternalProcess::spawn(command, base, width, Duration::from_secs_f64(a.timeout))
-        .map_err(|e| CliError::Usage(e.to_string()))?;
+    let process = super::spawn_external(command, base, width, a.timeout)?;
     let claim = if a.no_uniform_claim {
         Claim::NESTED
     } else {
-        parse_claim(&a.claim)?.unwrap_or(Claim::OWEN)
+        super::parse_claim(&a.claim)?.unwrap_or(Claim::OWEN)
     };
     let process = Arc::new(process);
     let candidate = external_candidate(
@@ -286,7 +271,7 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
             indicatif::ProgressStyle::with_template("verify {msg} [{bar:30}] {pos}/{len}")
                 .expect("template"),
         );
-        let claim = parse_claim(&a.claim)?;
+        let claim = super::parse_claim(&a.claim)?;
         let reports = verify_shard(
             &registry,
             &a.implementations,
