@@ -4,33 +4,34 @@
 //!
 //! Changed deliberately once: the ART vectors were regenerated when every dimension got its
 //! own input and output shifts (`crates/art/src/engine.rs`, "Dimensions"), which made two
-//! dimensions sharing a root symbol stop sharing the identical scramble. The peers' vectors did
+//! dimensions sharing a root symbol stop sharing the identical scramble (and once more when the
+//! output shift's mixer key became per-seed, as its bijection needs). The peers' vectors did
 //! not change; `digital-shift` and `lms-shift` were added.
 
 use gartowen::core::Width;
 
 #[rustfmt::skip]
 const GOLDEN: [(&str, [u64; 4], u64); 25] = [
-    ("art-owen-2", [0xdb6b25be, 0x3e6483f5, 0xc33838b3, 0x6754e6a1], 0xc730a2a46402602e),
-    ("q-art-4", [0x665427ca, 0xc3a6a64c, 0x46a8dcfe, 0x04e9ce9f], 0xf0a432bc89853b06),
-    ("art-owen-8p", [0x64ad2488, 0x9d346d83, 0x6bde32fa, 0x1868d1f3], 0x8feefd45c2477813),
-    ("art-owen-16p", [0xfc807a77, 0x18bba3ce, 0x09a33558, 0x5d1ec08d], 0x98bfe99a00c8b562),
-    ("art-owen-m1", [0xd7282773, 0x5f50af7b, 0xc6250cf2, 0x06366d57], 0x132d05470190b8c5),
-    ("art-owen-m2", [0x669b9696, 0x0fb08017, 0x54888ffc, 0xf034621f], 0x1f58dd16964427a7),
-    ("art-owen-m3", [0xae6ab835, 0x734527ec, 0xa29c3714, 0x92735bc7], 0xdf25b2ee13513792),
-    ("art-owen-m4", [0x5845fea7, 0x2ccfe4c1, 0x67cbc5fa, 0x7b18a9ee], 0xe59da00846e51dc7),
-    ("art-owen-m5", [0x39fa6ef9, 0x09d42d89, 0xf6143085, 0x56e2804f], 0x26d9bf16317c201b),
-    ("art-owen-m6", [0x729e54dd, 0xa53ba0e3, 0x44a7f156, 0x28139bbb], 0xdc1133fd4a8f479a),
-    ("art-owen-m7", [0xd68ca443, 0xf901e716, 0xaef722b6, 0x63ee5c4c], 0x8b018c88e0e50571),
-    ("art-owen-m8", [0xef7eb969, 0x16229914, 0x4d8f7678, 0x6549dc0b], 0x85f732e40ee627df),
-    ("art-owen-t1", [0xdb6b25be, 0x3e6483f5, 0xc33838b3, 0x6754e6a1], 0xc730a2a46402602e),
-    ("art-owen-t2", [0x82398a91, 0x11a1ad89, 0x9c866767, 0x40a500b0], 0xac595fd532581514),
-    ("art-owen-t3", [0x83270972, 0x133a1935, 0x92afffb0, 0x62f922f2], 0x9b5e5c82d4c0ee5b),
-    ("art-owen-t4", [0x8ff9fdc0, 0x08dccb37, 0x92c4540c, 0x7c817f27], 0x943565d3362d4880),
-    ("art-owen-t5", [0x81cf7c23, 0x077e0d23, 0x94e4afe6, 0x7dca89ae], 0x9b9ff220900205ca),
-    ("art-owen-t6", [0x8643c775, 0x04199b71, 0x97ef8260, 0x793e45ad], 0x9b227869c3a8c825),
-    ("art-owen-t7", [0x87b74877, 0x078edba1, 0x945495ee, 0x79d708c0], 0x9b409785bd2b6279),
-    ("art-owen-t8", [0x878494b4, 0x07517354, 0x95bd8cb1, 0x780a88af], 0x9a287c0f65fc39bd),
+    ("art-owen-2", [0xe3ccc0e9, 0x06c366a2, 0xfb9fdde4, 0x5ff303f6], 0xcef99c7f3a689c03),
+    ("q-art-4", [0x5ef3c29d, 0xfb01431b, 0x7e0f39a9, 0x3c4e2bc8], 0xf96d0c67d7efc72b),
+    ("art-owen-8p", [0x5c0ac1df, 0xa59388d4, 0x5379d7ad, 0x20cf34a4], 0x8627c39e9c2d843e),
+    ("art-owen-16p", [0xc4279f20, 0x201c4699, 0x3104d00f, 0x65b925da], 0x9176d7415ea2494f),
+    ("art-owen-m1", [0xef8fc224, 0x67f74a2c, 0xfe82e9a5, 0x3e918800], 0x1ae43b9c5ffa44e8),
+    ("art-owen-m2", [0x5e3c73c1, 0x37176540, 0x6c2f6aab, 0xc8938748], 0x1691e3cdc82edb8a),
+    ("art-owen-m3", [0x96cd5d62, 0x4be2c2bb, 0x9a3bd243, 0xaad4be90], 0xd6ec8c354d3bcbbf),
+    ("art-owen-m4", [0x60e21bf0, 0x14680196, 0x5f6c20ad, 0x43bf4cb9], 0xec549ed3188fe1ea),
+    ("art-owen-m5", [0x015d8bae, 0x3173c8de, 0xceb3d5d2, 0x6e456518], 0x2f1081cd6f16dc36),
+    ("art-owen-m6", [0x4a39b18a, 0x9d9c45b4, 0x7c001401, 0x10b47eec], 0xd5d80d2614e5bbb7),
+    ("art-owen-m7", [0xee2b4114, 0xc1a60241, 0x9650c7e1, 0x5b49b91b], 0x82c8b253be8ff95c),
+    ("art-owen-m8", [0xd7d95c3e, 0x2e857c43, 0x7528932f, 0x5dee395c], 0x8c3e0c3f508cdbf2),
+    ("art-owen-t1", [0xe3ccc0e9, 0x06c366a2, 0xfb9fdde4, 0x5ff303f6], 0xcef99c7f3a689c03),
+    ("art-owen-t2", [0xba9e6fc6, 0x290648de, 0xa4218230, 0x7802e5e7], 0xa590610e6c32e939),
+    ("art-owen-t3", [0xbb80ec25, 0x2b9dfc62, 0xaa081ae7, 0x5a5ec7a5], 0x929762598aaa1276),
+    ("art-owen-t4", [0xb75e1897, 0x307b2e60, 0xaa63b15b, 0x44269a70], 0x9dfc5b086847b4ad),
+    ("art-owen-t5", [0xb9689974, 0x3fd9e874, 0xac434ab1, 0x456d6cf9], 0x9256ccfbce68f9e7),
+    ("art-owen-t6", [0xbee42222, 0x3cbe7e26, 0xaf486737, 0x4199a0fa], 0x92eb46b29dc23408),
+    ("art-owen-t7", [0xbf10ad20, 0x3f293ef6, 0xacf370b9, 0x4170ed97], 0x9289a95ee3419e54),
+    ("art-owen-t8", [0xbf2371e3, 0x3ff69603, 0xad1a69e6, 0x40ad6df8], 0x93e142d43b96c590),
     ("lk-hash", [0x94a7f52c, 0x68f29851, 0x8cfb07af, 0x3032e7ae], 0x0000000000000000),
     ("lk-hash-improved", [0xdf3bb2e9, 0x1d40169b, 0xcd2d943b, 0x44395dd5], 0x0000000000000000),
     ("owen-per-bit-hash", [0x74eb2952, 0xca2a49e0, 0x623398da, 0xa71fe7df], 0x20bd068b9fa73e20),
