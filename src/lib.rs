@@ -14,6 +14,9 @@ use gartowen_core::Registry;
 
 pub use gartowen_verify::{certificate, external};
 
+pub mod generate;
+pub mod net_check;
+pub mod reports;
 pub mod testing;
 
 /// The conformance battery (`gartowen verify`), from the `gartowen-verify` crate.
@@ -34,4 +37,26 @@ pub fn registry() -> Registry {
         r.add(spec);
     }
     r
+}
+
+/// Every registry entry as JSON, as `gartowen list --json` prints it: name, base, table bytes
+/// (default configuration, seed 0), claim and summary.
+pub fn registry_listing() -> Result<Vec<serde_json::Value>, gartowen_core::CoreError> {
+    let registry = registry();
+    registry
+        .specs()
+        .iter()
+        .map(|spec| {
+            let ctx = gartowen_core::BuildContext {
+                seed: 0,
+                default_base: spec.default_base,
+            };
+            let s = (spec.build)(&gartowen_core::ScramblerRequest::parse(spec.name)?, &ctx)?;
+            Ok(serde_json::json!({
+                "name": spec.name, "base": s.base().base(), "table_bytes": s.table_bytes(),
+                "claims_nested_uniform": spec.claim.is_owen(), "claim": spec.claim.to_string(),
+                "summary": spec.summary,
+            }))
+        })
+        .collect()
 }

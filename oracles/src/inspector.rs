@@ -250,6 +250,29 @@ pub fn inspect_probes(
     nodes: u64,
     seed: u64,
 ) -> InspectReport {
+    let batch = |words: &mut [u64]| {
+        for w in words.iter_mut() {
+            *w = f(*w);
+        }
+    };
+    inspect_probes_batched(&batch, width, base, depth, nodes, seed)
+}
+
+/// Probes evaluated per call of the batch function of [`inspect_probes_batched`] (at most
+/// 2·256·256 words per call in base 256).
+const PROBES_PER_BATCH: u64 = 256;
+
+/// [`inspect_probes`] with `f` applied to many words per call (`f(words)` scrambles them in
+/// place): the same probes, in the same order, with the same report; an external or Python
+/// implementation then answers a few large requests instead of 2b·nodes single words.
+pub fn inspect_probes_batched(
+    f: &dyn Fn(&mut [u64]),
+    width: Width,
+    base: PowerOfTwoBase,
+    depth: u32,
+    nodes: u64,
+    seed: u64,
+) -> InspectReport {
     let layout = DigitLayout::new(width, base);
     let depth = depth.min(layout.num_digits()).max(1);
     let mut rng = SplitMix64::new(seed);
@@ -257,82 +280,101 @@ pub fn inspect_probes(
     let mut evaluations = 0u64;
     let mut violation = None;
     let mut checked = 0u64;
-    'probes: for probe in 0..nodes {
-        // Cycle through depths so every level is probed; the prefix is random.
-        let k = (probe % depth as u64) as u32;
-        let bits = layout.digit_bits(k);
-        let base_word = rng.next_u64() & width.mask();
-        let prefix = layout.prefix(base_word, k);
-        let mut images = vec![0u8; 1 << bits];
-        let mut owner: Vec<Option<(u64, u64)>> = vec![None; 1 << bits];
-        let mut above: Option<(u64, u64)> = None; // an (input, output) fixing the digits above k
-        for d in 0..(1u32 << bits) {
-            let mut outs = [0u64; 2];
-            let mut ins = [0u64; 2];
-            for tail in 0..2 {
-                let mut x = layout.set(base_word, k, d);
-                for j in k + 1..layout.num_digits() {
-                    x = layout.set(x, j, (rng.next_u64() & 0xFF) as u32);
+    let mut first_probe = 0u64;
+    'batches: while first_probe < nodes {
+        let last_probe = nodes.min(first_probe + PROBES_PER_BATCH);
+        // Draw every input of these probes first (f does not touch the generator, so the
+        // inputs are those of one-at-a-time evaluation), then evaluate them in one call.
+        let mut inputs = Vec::new();
+        let mut probes = Vec::new();
+        for probe in first_probe..last_probe {
+            // Cycle through depths so every level is probed; the prefix is random.
+            let k = (probe % depth as u64) as u32;
+            let bits = layout.digit_bits(k);
+            let base_word = rng.next_u64() & width.mask();
+            probes.push((k, bits, layout.prefix(base_word, k), inputs.len()));
+            for d in 0..(1u32 << bits) {
+                for _tail in 0..2 {
+                    let mut x = layout.set(base_word, k, d);
+                    for j in k + 1..layout.num_digits() {
+                        x = layout.set(x, j, (rng.next_u64() & 0xFF) as u32);
+                    }
+                    inputs.push(x);
                 }
-                let y = f(x);
-                evaluations += 1;
-                if width.check(y).is_err() {
-                    violation = Some(Violation {
-                        kind: ViolationKind::OutOfRange,
-                        depth: k,
-                        prefix,
-                        inputs: [x, x],
-                        outputs: [y, y],
-                    });
-                    break 'probes;
-                }
-                // Digits above k must be the same for every input under this prefix.
-                match above {
-                    None => above = Some((x, y)),
-                    Some((x0, y0)) => {
-                        if let Some(j) = (0..k).find(|&j| layout.get(y, j) != layout.get(y0, j)) {
-                            violation = Some(Violation {
-                                kind: ViolationKind::NotNested,
-                                depth: j,
-                                prefix: layout.prefix(x, j),
-                                inputs: [x0, x],
-                                outputs: [y0, y],
-                            });
-                            break 'probes;
+            }
+        }
+        let mut outputs = inputs.clone();
+        f(&mut outputs);
+        for &(k, bits, prefix, at) in &probes {
+            let mut images = vec![0u8; 1 << bits];
+            let mut owner: Vec<Option<(u64, u64)>> = vec![None; 1 << bits];
+            let mut above: Option<(u64, u64)> = None; // an (input, output) fixing the digits above k
+            for d in 0..(1usize << bits) {
+                let mut outs = [0u64; 2];
+                let mut ins = [0u64; 2];
+                for tail in 0..2 {
+                    let (x, y) = (inputs[at + 2 * d + tail], outputs[at + 2 * d + tail]);
+                    evaluations += 1;
+                    if width.check(y).is_err() {
+                        violation = Some(Violation {
+                            kind: ViolationKind::OutOfRange,
+                            depth: k,
+                            prefix,
+                            inputs: [x, x],
+                            outputs: [y, y],
+                        });
+                        break 'batches;
+                    }
+                    // Digits above k must be the same for every input under this prefix.
+                    match above {
+                        None => above = Some((x, y)),
+                        Some((x0, y0)) => {
+                            if let Some(j) = (0..k).find(|&j| layout.get(y, j) != layout.get(y0, j))
+                            {
+                                violation = Some(Violation {
+                                    kind: ViolationKind::NotNested,
+                                    depth: j,
+                                    prefix: layout.prefix(x, j),
+                                    inputs: [x0, x],
+                                    outputs: [y0, y],
+                                });
+                                break 'batches;
+                            }
                         }
                     }
+                    ins[tail] = x;
+                    outs[tail] = y;
                 }
-                ins[tail] = x;
-                outs[tail] = y;
+                let (o0, o1) = (layout.get(outs[0], k), layout.get(outs[1], k));
+                if o0 != o1 {
+                    violation = Some(Violation {
+                        kind: ViolationKind::NotNested,
+                        depth: k,
+                        prefix,
+                        inputs: ins,
+                        outputs: outs,
+                    });
+                    break 'batches;
+                }
+                if let Some((x_other, y_other)) = owner[o0 as usize] {
+                    violation = Some(Violation {
+                        kind: ViolationKind::NotBijective,
+                        depth: k,
+                        prefix,
+                        inputs: [x_other, ins[0]],
+                        outputs: [y_other, outs[0]],
+                    });
+                    break 'batches;
+                }
+                owner[o0 as usize] = Some((ins[0], outs[0]));
+                images[d] = o0 as u8;
             }
-            let (o0, o1) = (layout.get(outs[0], k), layout.get(outs[1], k));
-            if o0 != o1 {
-                violation = Some(Violation {
-                    kind: ViolationKind::NotNested,
-                    depth: k,
-                    prefix,
-                    inputs: ins,
-                    outputs: outs,
-                });
-                break 'probes;
+            checked += 1;
+            if bits == base.q() {
+                law.add(&Permutation::from_images(&images).expect("checked bijective"));
             }
-            if let Some((x_other, y_other)) = owner[o0 as usize] {
-                violation = Some(Violation {
-                    kind: ViolationKind::NotBijective,
-                    depth: k,
-                    prefix,
-                    inputs: [x_other, ins[0]],
-                    outputs: [y_other, outs[0]],
-                });
-                break 'probes;
-            }
-            owner[o0 as usize] = Some((ins[0], outs[0]));
-            images[d as usize] = o0 as u8;
         }
-        checked += 1;
-        if bits == base.q() {
-            law.add(&Permutation::from_images(&images).expect("checked bijective"));
-        }
+        first_probe = last_probe;
     }
     law.finish();
     InspectReport {

@@ -53,3 +53,9 @@ impl From<gartowen::core::CoreError> for CliError {
         CliError::Usage(e.to_string())
     }
 }
+
+impl From<gartowen::generate::RequestError> for CliError {
+    fn from(e: gartowen::generate::RequestError) -> Self {
+        CliError::Usage(e.to_string())
+    }
+}

@@ -22,14 +22,7 @@ pub enum InputFormat {
 /// The certificate record of a point file: its path, the FNV-1a checksum of its words
 /// (row-major, little-endian) and its shape.
 pub fn file_record(path: &Path, points: &PointSet) -> gartowen::certificate::InputRecord {
-    gartowen::certificate::InputRecord {
-        kind: "file".into(),
-        name: path.display().to_string(),
-        checksum_fnv1a64: Some(format!("{:016x}", points.checksum())),
-        details: serde_json::json!({
-            "points": points.len(), "dims": points.dims(), "width_bits": points.width().bits(),
-        }),
-    }
+    gartowen::reports::point_set_record("file", &path.display().to_string(), points)
 }
 
 fn bad(path: &Path, msg: impl std::fmt::Display) -> CliError {

@@ -76,6 +76,17 @@ impl Dd {
         Dd { hi, lo }
     }
 
+    /// self / b for finite nonzero b, to double-double precision (a few ε² relative): the
+    /// remainder of the first quotient is formed exactly by an error-free product.
+    #[inline(always)]
+    pub fn div_f64(self, b: f64) -> Dd {
+        let q1 = self.hi / b;
+        let (p, e) = two_prod(q1, b);
+        let r = ((self.hi - p) - e) + self.lo;
+        let (hi, lo) = quick_two_sum(q1, r / b);
+        Dd { hi, lo }
+    }
+
     /// −self.
     #[inline(always)]
     pub fn neg(self) -> Dd {

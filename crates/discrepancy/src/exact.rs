@@ -73,11 +73,13 @@ pub fn exact_rational(points: Points, kind: Kind) -> BigRational {
 /// D² exactly, with its correctly rounded f64.
 pub fn exact(points: Points, kind: Kind) -> Discrepancy {
     let r = exact_rational(points, kind);
+    let value = to_f64(&r);
+    let bound = crate::rational::rounding_bound(&r, value);
     Discrepancy {
         kind,
         method: Method::Exact,
-        value: to_f64(&r),
+        value,
         exact: Some(r),
-        rel_error_bound: Some(0.0),
+        rel_error_bound: Some(bound),
     }
 }

@@ -156,12 +156,14 @@ pub fn fast_l2star_2d_rational(points: Points) -> Option<BigRational> {
 /// Exact 2-D L2-star by the fast path; `None` unless d = 2.
 pub fn fast(points: Points) -> Option<Discrepancy> {
     let r = fast_l2star_2d_rational(points)?;
+    let value = to_f64(&r);
+    let bound = crate::rational::rounding_bound(&r, value);
     Some(Discrepancy {
         kind: Kind::L2Star,
         method: Method::Fast,
-        value: to_f64(&r),
+        value,
         exact: Some(r),
-        rel_error_bound: Some(0.0),
+        rel_error_bound: Some(bound),
     })
 }
 

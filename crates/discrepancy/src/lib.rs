@@ -13,6 +13,7 @@
 //!   computed in exact integers and combined into an exact rational, with a correctly rounded f64.
 //! * `fast`: 2-D L2-star in O(N log N) (sort by x, Fenwick tree over y ranks), in exact integers.
 
+pub mod choice;
 pub mod compensated;
 pub mod curves;
 mod dd;
@@ -92,6 +93,7 @@ pub struct Discrepancy {
     pub value: f64,
     /// The exact rational D², for exact and fast.
     pub exact: Option<BigRational>,
-    /// A bound on |value − D²| / D² where one is known (0 for exact results).
+    /// A bound on |value − D²| / D² where one is known (for exact and fast: 0 when the f64
+    /// is D² exactly, else 2^-53, the rounding of a correctly rounded value).
     pub rel_error_bound: Option<f64>,
 }

@@ -26,6 +26,17 @@ pub fn c1(kind: Kind, d: usize) -> BigRational {
     }
 }
 
+/// The relative error bound of `value`, the correctly rounded f64 of `r`: 0 when it is `r`
+/// exactly, else the unit roundoff 2^-53 (the exact methods return a rounded float, so their
+/// bound is not 0 unless the rounding was exact).
+pub fn rounding_bound(r: &BigRational, value: f64) -> f64 {
+    if BigRational::from_float(value).is_some_and(|v| &v == r) {
+        0.0
+    } else {
+        f64::EPSILON / 2.0
+    }
+}
+
 /// The f64 nearest to `r` (ties to even), for |r| in the normal range.
 pub fn to_f64(r: &BigRational) -> f64 {
     if r.is_zero() {

@@ -21,7 +21,7 @@ use gartowen_core::{
     BuildContext, Claim, CoreError, PowerOfTwoBase, Registry, Scrambler, SplitMix64, Width,
 };
 use gartowen_netcheck::{counting::t_value, rank, CheckBase, PointSet};
-use gartowen_oracles::inspector::{inspect_exhaustive, inspect_probes};
+use gartowen_oracles::inspector::{inspect_exhaustive, inspect_probes_batched};
 use gartowen_seq::SequenceKind;
 use serde::Serialize;
 use std::time::Instant;
@@ -161,9 +161,10 @@ fn check_injective(s: &dyn Scrambler, level: Level) -> (Verdict, String, Option<
             let mut inputs: Vec<u64> = (0..n).map(|_| rng.next_u64() & width.mask()).collect();
             inputs.sort_unstable();
             inputs.dedup();
+            let mut outputs = inputs.clone();
+            s.scramble_batch(&mut outputs, width, dim);
             let mut seen = std::collections::HashMap::with_capacity(inputs.len());
-            for &x in &inputs {
-                let y = s.scramble(x, width, dim);
+            for (&x, &y) in inputs.iter().zip(&outputs) {
                 if width.check(y).is_err() {
                     return (
                         Verdict::Fail,
@@ -214,8 +215,8 @@ fn check_nested(s: &dyn Scrambler) -> (Verdict, String, Option<f64>) {
         inspect_exhaustive(&|x| s.scramble(x, w16, 0), w16, base, 16)
     } else {
         let w = working_width(s);
-        inspect_probes(
-            &|x| s.scramble(x, w, 0),
+        inspect_probes_batched(
+            &|words: &mut [u64]| s.scramble_batch(words, w, 0),
             w,
             base,
             w.bits(),
@@ -276,10 +277,16 @@ fn check_nets(s: &dyn Scrambler, level: Level) -> (Verdict, String, Option<f64>)
     let q = kind.base().q();
     for m in 1..=max_m {
         let expected = rank::t_value(&seq, &dims, q, m).expect("rank path");
-        let p = PointSet::from_sequence(&seq, &dims, 1u64 << (q * m), |x, j| {
-            s.scramble(x, width, j as u32)
-        })
-        .expect("points");
+        let n = 1u64 << (q * m);
+        let columns = dims
+            .iter()
+            .map(|&j| {
+                let mut column: Vec<u64> = (0..n).map(|i| seq.point(i, j)).collect();
+                s.scramble_batch(&mut column, width, j as u32);
+                column
+            })
+            .collect();
+        let p = PointSet::from_columns(width, columns).expect("points");
         let got = t_value(
             &p,
             CheckBase::new(kind.base().base() as u64).expect("base"),

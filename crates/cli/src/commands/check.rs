@@ -4,11 +4,8 @@ use crate::input::{read_points, InputFormat};
 use crate::CliError;
 use clap::Args;
 use gartowen::certificate::{CertVerdict, Certificate};
-use gartowen::netcheck::counting::{
-    self, check_net_with_progress, check_sequence_with_progress, histograms, implied_m,
-    t_value_with_witness,
-};
-use gartowen::netcheck::{CheckBase, NetReport, PointSet, ProjectionSpec, SequenceReport};
+use gartowen::net_check::{check_points, NetOutcome, NetQuery, Progress};
+use gartowen::netcheck::CheckBase;
 use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::{json, Value};
 use std::path::PathBuf;
@@ -82,35 +79,24 @@ fn progress_bar(total: u64, what: &str) -> ProgressBar {
     bar
 }
 
-fn net_json(r: &NetReport) -> Value {
-    serde_json::to_value(r).expect("serializable")
-}
+/// A progress bar on a terminal (hidden otherwise), one per projection.
+#[derive(Default)]
+struct BarProgress(std::sync::Mutex<Option<ProgressBar>>);
 
-fn seq_json(r: &SequenceReport) -> Value {
-    serde_json::to_value(r).expect("serializable")
-}
-
-fn describe_failure(f: &gartowen::netcheck::BoxFailure, base: u64) -> String {
-    // Only refined dimensions (d_j > 0) restrict the box; the others span [0,1).
-    let sides: Vec<String> = f
-        .shape
-        .iter()
-        .zip(&f.box_index)
-        .enumerate()
-        .filter(|(_, (&d, _))| d > 0)
-        .map(|(j, (&d, &a))| format!("dim {j} in [{a}, {})/{base}^{d}", a + 1))
-        .collect();
-    format!(
-        "shape {:?}: the box {} holds {} points, every box must hold {}",
-        f.shape,
-        if sides.is_empty() {
-            "[0,1)^s".to_string()
-        } else {
-            sides.join(", ")
-        },
-        f.count,
-        f.expected
-    )
+impl Progress for BarProgress {
+    fn start(&self, total: u64, what: &str) {
+        *self.0.lock().expect("bar") = Some(progress_bar(total, what));
+    }
+    fn advance(&self, k: u64) {
+        if let Some(bar) = self.0.lock().expect("bar").as_ref() {
+            bar.inc(k);
+        }
+    }
+    fn finish(&self) {
+        if let Some(bar) = self.0.lock().expect("bar").take() {
+            bar.finish_and_clear();
+        }
+    }
 }
 
 /// Runs `check`.
@@ -123,21 +109,19 @@ pub fn run(a: CheckArgs) -> Result<ExitCode, CliError> {
     }
     let base = CheckBase::new(a.base).map_err(usage)?;
     let points = read_points(&a.file, a.format)?;
-    let projections = match &a.projections {
-        Some(spec) => Some(
-            spec.parse::<ProjectionSpec>()
-                .map_err(usage)?
-                .expand(points.dims())
-                .map_err(usage)?,
-        ),
-        None => None,
-    };
     let input = crate::input::file_record(&a.file, &points);
-    let (holds, result, text) = if a.sequence {
-        run_sequence(&a, base, &points, projections.as_deref())?
-    } else {
-        run_net(&a, base, &points, projections.as_deref())?
+    let query = NetQuery {
+        m: a.m,
+        t: a.t,
+        sequence: a.sequence,
+        projections: a.projections.clone(),
+        histograms: a.histograms,
     };
+    let NetOutcome {
+        holds,
+        result,
+        text,
+    } = check_points(&points, base, &query, &BarProgress::default()).map_err(CliError::Usage)?;
     if let Some(path) = &a.junit {
         crate::output::write_junit(
             path,
@@ -171,8 +155,6 @@ pub fn run(a: CheckArgs) -> Result<ExitCode, CliError> {
         ExitCode::from(1)
     })
 }
-
-type Outcome = (bool, Value, String);
 
 /// A testcase per projection of a check result (one object, or a list for --projections): it
 /// fails where the net or sequence property does not hold; t-values alone are measurements.
@@ -208,157 +190,4 @@ fn junit_suite(file: &str, result: &Value) -> gartowen::battery::junit::JunitSui
             })
             .collect(),
     }
-}
-
-/// The sets to check: the whole set, or each requested projection with its dimensions.
-fn targets(
-    points: &PointSet,
-    projections: Option<&[Vec<usize>]>,
-) -> Result<Vec<(Vec<usize>, PointSet)>, CliError> {
-    match projections {
-        None => Ok(vec![((0..points.dims()).collect(), points.clone())]),
-        Some(list) => list
-            .iter()
-            .map(|p| Ok((p.clone(), points.project(p).map_err(usage)?)))
-            .collect(),
-    }
-}
-
-fn run_net(
-    a: &CheckArgs,
-    base: CheckBase,
-    points: &PointSet,
-    projections: Option<&[Vec<usize>]>,
-) -> Result<Outcome, CliError> {
-    let m = match a.m {
-        Some(m) => m,
-        None => implied_m(points, base).map_err(usage)?,
-    };
-    let b = base.get();
-    let targets = targets(points, projections)?;
-    let mut holds = true;
-    let mut results = Vec::new();
-    let mut text = String::new();
-    for (dims, set) in &targets {
-        match a.t {
-            Some(t) => {
-                let total =
-                    gartowen::netcheck::shapes::shape_count(m.saturating_sub(t), set.dims()) as u64;
-                let bar = progress_bar(total, "shapes");
-                let r = check_net_with_progress(set, base, m, t, &|k| bar.inc(k)).map_err(usage)?;
-                bar.finish_and_clear();
-                holds &= r.holds;
-                text += &format!(
-                    "dims {dims:?}: ({t},{m},{})-net in base {b}: {} ({} shapes checked)\n",
-                    set.dims(),
-                    if r.holds { "holds" } else { "FAILS" },
-                    r.shapes_checked
-                );
-                if let Some(f) = &r.first_failure {
-                    text += &format!("  first failure: {}\n", describe_failure(f, b));
-                }
-                let mut v = net_json(&r);
-                v["projection"] = json!(dims);
-                if a.histograms {
-                    v["histograms"] =
-                        serde_json::to_value(histograms(set, base, m, t).map_err(usage)?)
-                            .expect("json");
-                }
-                results.push(v);
-            }
-            None => {
-                let (t, witness) = t_value_with_witness(set, base, m).map_err(usage)?;
-                text += &format!(
-                    "dims {dims:?}: t = {t} (m = {m}, s = {}, base {b})\n",
-                    set.dims()
-                );
-                if let Some(f) = witness.as_ref().and_then(|w| w.first_failure.as_ref()) {
-                    text += &format!(
-                        "  not a ({},{m},{})-net: {}\n",
-                        t - 1,
-                        set.dims(),
-                        describe_failure(f, b)
-                    );
-                }
-                results.push(json!({
-                    "projection": dims, "t": t, "m": m, "s": set.dims(), "b": b,
-                    "witness_at_t_minus_1": witness.map(|w| net_json(&w)),
-                }));
-            }
-        }
-    }
-    let result = if projections.is_none() {
-        results.pop().expect("one result")
-    } else {
-        json!(results)
-    };
-    Ok((holds, result, text))
-}
-
-fn run_sequence(
-    a: &CheckArgs,
-    base: CheckBase,
-    points: &PointSet,
-    projections: Option<&[Vec<usize>]>,
-) -> Result<Outcome, CliError> {
-    let max_m = match a.m {
-        Some(m) => m,
-        None => (0..=32u32)
-            .take_while(|&k| base.pow(k).is_some_and(|p| p <= points.len() as u64))
-            .last()
-            .unwrap_or(0),
-    };
-    let b = base.get();
-    let targets = targets(points, projections)?;
-    let mut holds = true;
-    let mut results = Vec::new();
-    let mut text = String::new();
-    for (dims, set) in &targets {
-        let (t, r) = match a.t {
-            Some(t) => {
-                let bar = progress_bar(0, "block-shapes");
-                let r = check_sequence_with_progress(set, base, t, max_m, &|k| bar.inc(k))
-                    .map_err(usage)?;
-                bar.finish_and_clear();
-                (t, r)
-            }
-            None => {
-                // The least t whose sequence check holds.
-                let mut t = 0;
-                loop {
-                    let r = counting::check_sequence(set, base, t, max_m).map_err(usage)?;
-                    if r.holds || t == max_m {
-                        break (t, r);
-                    }
-                    t += 1;
-                }
-            }
-        };
-        if a.t.is_some() {
-            holds &= r.holds;
-        }
-        text += &format!(
-            "dims {dims:?}: ({t},{})-sequence in base {b} over blocks of {b}^k points, k ≤ {max_m}: {} ({} blocks)\n",
-            set.dims(),
-            if r.holds { "holds" } else { "FAILS" },
-            r.blocks_checked
-        );
-        if let Some(f) = &r.first_failure {
-            text += &format!(
-                "  first failure: block {} of {b}^{} points, {}\n",
-                f.block,
-                f.m,
-                describe_failure(&f.failure, b)
-            );
-        }
-        let mut v = seq_json(&r);
-        v["projection"] = json!(dims);
-        results.push(v);
-    }
-    let result = if projections.is_none() {
-        results.pop().expect("one result")
-    } else {
-        json!(results)
-    };
-    Ok((holds, result, text))
 }

@@ -4,7 +4,9 @@ use crate::input::{read_points, InputFormat};
 use crate::CliError;
 use clap::{Args, ValueEnum};
 use gartowen::certificate::{CertVerdict, Certificate};
-use gartowen::discrepancy::{compensated, exact, fast2d, naive, Discrepancy, Kind, Points};
+use gartowen::discrepancy::choice::{compute, MethodChoice};
+use gartowen::discrepancy::{Discrepancy, Kind, Points};
+use gartowen::reports::discrepancy_json;
 use serde_json::json;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -71,42 +73,14 @@ pub struct DiscrepancyArgs {
 }
 
 fn run_method(points: Points, kind: Kind, method: MethodArg) -> Result<Discrepancy, CliError> {
-    Ok(match method {
-        MethodArg::Naive => naive::naive(points, kind),
-        MethodArg::Compensated => compensated::compensated(points, kind),
-        MethodArg::Exact => exact::exact(points, kind),
-        MethodArg::Fast => {
-            if kind != Kind::L2Star || points.dims != 2 {
-                return Err(CliError::Usage("--method fast is 2-D L2-star only".into()));
-            }
-            fast2d::fast(points).expect("2-D")
-        }
-        MethodArg::Auto => {
-            if kind == Kind::L2Star && points.dims == 2 {
-                fast2d::fast(points).expect("2-D")
-            } else {
-                let c = compensated::compensated(points, kind);
-                if c.rel_error_bound.is_some_and(|b| b <= 1e-12) {
-                    c
-                } else {
-                    exact::exact(points, kind)
-                }
-            }
-        }
-    })
-}
-
-fn report(d: &Discrepancy, seconds: f64, root: bool) -> serde_json::Value {
-    let value = if root { d.value.sqrt() } else { d.value };
-    json!({
-        "kind": d.kind.name(),
-        "method": d.method,
-        "value": value,
-        "squared": !root,
-        "exact": d.exact.as_ref().map(|r| r.to_string()),
-        "rel_error_bound": d.rel_error_bound,
-        "seconds": seconds,
-    })
+    let choice = match method {
+        MethodArg::Auto => MethodChoice::Auto,
+        MethodArg::Naive => MethodChoice::Naive,
+        MethodArg::Compensated => MethodChoice::Compensated,
+        MethodArg::Exact => MethodChoice::Exact,
+        MethodArg::Fast => MethodChoice::Fast,
+    };
+    compute(points, kind, choice).map_err(|e| CliError::Usage(format!("--{e}")))
 }
 
 /// Runs `discrepancy`.
@@ -143,13 +117,13 @@ pub fn run(a: DiscrepancyArgs) -> Result<ExitCode, CliError> {
                 dims: 2,
                 width: set.width(),
             })?;
-            let mut v = report(&r, s, a.root);
+            let mut v = discrepancy_json(&r, s, a.root);
             v["pair"] = json!([i, j]);
             pair_reports.push(v);
         }
     }
     if a.json {
-        let mut result = report(&joint, secs, a.root);
+        let mut result = discrepancy_json(&joint, secs, a.root);
         result["pairs"] = json!(pair_reports);
         let doc = Certificate::new(
             "discrepancy",

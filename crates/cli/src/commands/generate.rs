@@ -4,8 +4,8 @@ use super::width_from_bits;
 use crate::output::{io_err, write_atomically};
 use crate::CliError;
 use clap::{Args, ValueEnum};
-use gartowen::core::{word_to_f64, Scrambler, Width};
-use gartowen::seq::{gray_code, DigitalSequence, SequenceKind};
+use gartowen::core::{word_to_f64, Width};
+use gartowen::generate::{GeneratePlan, GenerateRequest, PointCount, PointOrder};
 use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -23,7 +23,7 @@ pub enum PointFormat {
 
 /// Order in which points are written.
 #[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
-pub enum PointOrder {
+pub enum OrderArg {
     /// Point i of the output is index start + i.
     Natural,
     /// Row i is index gray(start + i) = n ^ (n >> 1): scipy.stats.qmc.Sobol's order.
@@ -66,8 +66,8 @@ pub struct GenerateArgs {
     #[arg(long)]
     pub words: bool,
     /// Point order.
-    #[arg(long, value_enum, default_value_t = PointOrder::Natural)]
-    pub order: PointOrder,
+    #[arg(long, value_enum, default_value_t = OrderArg::Natural)]
+    pub order: OrderArg,
     /// Scrambler from the registry (see `gartowen list`), NAME[:OPTION...].
     #[arg(long, default_value = "none")]
     pub scramble: String,
@@ -83,60 +83,27 @@ pub struct GenerateArgs {
     pub output: Option<PathBuf>,
 }
 
-/// The validated request: sequence, range and scrambler.
-struct Plan {
-    seq: DigitalSequence,
-    start: u64,
-    count: u64,
-    scrambler: Box<dyn Scrambler>,
-}
-
-fn plan(a: &GenerateArgs) -> Result<Plan, CliError> {
-    let kind: SequenceKind = a.seq.parse()?;
-    let width = width_from_bits(a.bits)?;
-    let seq = kind.build(a.dims, width)?;
+fn plan(a: &GenerateArgs) -> Result<GeneratePlan, CliError> {
     let count = match (a.log2_n, a.n) {
-        (Some(m), None) => {
-            if m > seq.index_bits() || m >= 64 {
-                return Err(CliError::Usage(format!(
-                    "--log2-n {m} is past the {} index bits of {}",
-                    seq.index_bits(),
-                    kind.name()
-                )));
-            }
-            1u64 << m
-        }
-        (None, Some(0)) => return Err(CliError::Usage("--n must be at least 1".into())),
-        (None, Some(n)) => n,
+        (Some(m), None) => PointCount::Log2(m),
+        (None, Some(n)) => PointCount::Exact(n),
         _ => {
             return Err(CliError::Usage(
                 "give exactly one of --log2-n and --n".into(),
             ))
         }
     };
-    seq.check_range(a.start, count)?;
-    let default_base = match a.scramble_base {
-        Some(b) => gartowen::core::PowerOfTwoBase::from_base(b)?,
-        None => kind.base(),
-    };
-    let ctx = gartowen::core::BuildContext {
-        seed: a.seed,
-        default_base,
-    };
-    let scrambler = gartowen::registry().build_with(&a.scramble, &ctx)?;
-    if !scrambler.supports_width(width) {
-        return Err(CliError::Usage(format!(
-            "scrambler {} does not support {}-bit words",
-            scrambler.name(),
-            width.bits()
-        )));
-    }
-    Ok(Plan {
-        seq,
-        start: a.start,
+    width_from_bits(a.bits)?;
+    Ok(GeneratePlan::new(&GenerateRequest {
+        seq: a.seq.clone(),
+        dims: a.dims,
         count,
-        scrambler,
-    })
+        start: a.start,
+        bits: a.bits,
+        scramble: a.scramble.clone(),
+        seed: a.seed,
+        scramble_base: a.scramble_base,
+    })?)
 }
 
 /// Fills row i of a [`RowSource`] into the buffer.
@@ -170,22 +137,16 @@ impl RowSource<'_> {
 }
 
 /// The generated points (scrambled words) in the requested order.
-fn rows<'a>(p: &'a Plan, order: PointOrder) -> RowSource<'a> {
-    let width = p.seq.width();
+fn rows(p: &GeneratePlan, order: OrderArg) -> RowSource<'_> {
+    let order = match order {
+        OrderArg::Natural => PointOrder::Natural,
+        OrderArg::Gray => PointOrder::Gray,
+    };
     RowSource {
-        width,
+        width: p.width(),
         dims: p.seq.dims(),
         count: p.count,
-        row: Box::new(move |i, row| {
-            let position = p.start + i;
-            let index = match order {
-                PointOrder::Natural => position,
-                PointOrder::Gray => gray_code(position),
-            };
-            for (j, x) in row.iter_mut().enumerate() {
-                *x = p.scrambler.scramble(p.seq.point(index, j), width, j as u32);
-            }
-        }),
+        row: Box::new(move |i, row| p.row(i, order, row)),
     }
 }
 

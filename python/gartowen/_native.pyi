@@ -1,0 +1,25 @@
+# Type stubs of the native module. The public API is in gartowen/__init__.py; these take
+# validated arguments (see there for units and conventions).
+from typing import Any, Callable, Optional, Tuple
+
+import numpy as np
+
+__version__: str
+
+def generate(
+    seq: str, dims: int, n: int, scramble: str, seed: int, base: Optional[int], bits: int,
+    words: bool, start: int, gray: bool,
+) -> np.ndarray: ...
+def scramble(points: np.ndarray, name: str, seed: int, base: Optional[int]) -> np.ndarray: ...
+def check(
+    points: np.ndarray, base: int, m: Optional[int], t: Optional[int],
+    projections: Optional[str], sequence: bool, histograms: bool,
+) -> Tuple[str, bool, str]: ...
+def discrepancy(
+    points: np.ndarray, kind: str, method: str, root: bool, pairs: Optional[str]
+) -> str: ...
+def verify(
+    func: Callable[[np.ndarray, int, int], np.ndarray], name: str, base: int, width: int,
+    level: str, claim: str, seed: int, expect: Optional[str],
+) -> Tuple[str, int, int, float, float]: ...
+def list_scramblers() -> str: ...

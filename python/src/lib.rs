@@ -1,0 +1,404 @@
+//! The native half of the `gartowen` Python package. The public API, its argument checks and
+//! result classes live in `gartowen/__init__.py`; these functions take validated arguments,
+//! release the GIL for the Rust work and return arrays or the JSON documents the CLI prints.
+
+mod arrays;
+mod python_scrambler;
+
+use arrays::{read_points, to_array, Element};
+use gartowen::certificate::{CertVerdict, Certificate, InputRecord};
+use gartowen::core::{BuildContext, Claim, PowerOfTwoBase, Scrambler};
+use gartowen::discrepancy::choice::{compute, MethodChoice};
+use gartowen::discrepancy::{Kind, Points};
+use gartowen::generate::{GeneratePlan, GenerateRequest, PointCount, PointOrder, RequestError};
+use gartowen::net_check::{check_points, NetQuery, Silent};
+use gartowen::netcheck::CheckBase;
+use gartowen::verify::{check_candidate, Candidate, Level};
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use serde_json::json;
+use std::sync::Arc;
+use std::time::Instant;
+
+fn value_error(e: impl std::fmt::Display) -> PyErr {
+    PyValueError::new_err(e.to_string())
+}
+
+/// Points of a built-in sequence, optionally scrambled: an (n, dims) array.
+#[pyfunction]
+#[pyo3(signature = (seq, dims, n, scramble, seed, base, bits, words, start, gray))]
+#[allow(clippy::too_many_arguments)]
+fn generate<'py>(
+    py: Python<'py>,
+    seq: &str,
+    dims: usize,
+    n: u64,
+    scramble: &str,
+    seed: u64,
+    base: Option<u64>,
+    bits: u32,
+    words: bool,
+    start: u64,
+    gray: bool,
+) -> PyResult<Bound<'py, PyAny>> {
+    let request = GenerateRequest {
+        seq: seq.into(),
+        dims,
+        count: PointCount::Exact(n),
+        start,
+        bits,
+        scramble: scramble.into(),
+        seed,
+        scramble_base: base,
+    };
+    let order = if gray {
+        PointOrder::Gray
+    } else {
+        PointOrder::Natural
+    };
+    let (flat, width) = py
+        .detach(|| {
+            let plan = GeneratePlan::new(&request)?;
+            Ok::<_, gartowen::generate::RequestError>((plan.words(order)?, plan.width()))
+        })
+        .map_err(value_error)?;
+    let element = match (words, width.bits()) {
+        (false, _) => Element::F64,
+        (true, 32) => Element::U32,
+        (true, _) => Element::U64,
+    };
+    to_array(py, flat, n as usize, dims, width, element)
+}
+
+/// The points (or words) scrambled by a registry scrambler, column j as dimension j; the
+/// result has the input's shape (2-D) and element type.
+#[pyfunction]
+#[pyo3(signature = (points, name, seed, base))]
+fn scramble<'py>(
+    py: Python<'py>,
+    points: &Bound<'py, PyAny>,
+    name: &str,
+    seed: u64,
+    base: Option<u64>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let input = read_points(points, "points")?;
+    let width = input.width();
+    let (n, dims) = (input.n, input.dims);
+    let mut flat = input.words;
+    py.detach(|| {
+        let ctx = BuildContext {
+            seed,
+            default_base: match base {
+                Some(b) => PowerOfTwoBase::from_base(b)?,
+                None => PowerOfTwoBase::B2,
+            },
+        };
+        let s = gartowen::registry().build_with(name, &ctx)?;
+        if !s.supports_width(width) {
+            return Err(RequestError::Invalid(format!(
+                "scrambler {} does not support the {}-bit words of points",
+                s.name(),
+                width.bits()
+            )));
+        }
+        let mut column = vec![0u64; n];
+        for j in 0..dims {
+            for (i, x) in column.iter_mut().enumerate() {
+                *x = flat[i * dims + j];
+            }
+            s.scramble_batch(&mut column, width, j as u32);
+            for (i, &x) in column.iter().enumerate() {
+                flat[i * dims + j] = x;
+            }
+        }
+        Ok::<(), RequestError>(())
+    })
+    .map_err(value_error)?;
+    to_array(py, flat, n, dims, width, input.element)
+}
+
+/// `gartowen check --json` on an array: the certificate JSON text and whether it holds.
+#[pyfunction]
+#[pyo3(signature = (points, base, m, t, projections, sequence, histograms))]
+#[allow(clippy::too_many_arguments)]
+fn check(
+    py: Python<'_>,
+    points: &Bound<'_, PyAny>,
+    base: u64,
+    m: Option<u32>,
+    t: Option<u32>,
+    projections: Option<String>,
+    sequence: bool,
+    histograms: bool,
+) -> PyResult<(String, bool, String)> {
+    let check_base = CheckBase::new(base).map_err(value_error)?;
+    let set = read_points(points, "points")?.point_set()?;
+    let query = NetQuery {
+        m,
+        t,
+        sequence,
+        projections: projections.clone(),
+        histograms,
+    };
+    let outcome = py
+        .detach(|| check_points(&set, check_base, &query, &Silent))
+        .map_err(PyValueError::new_err)?;
+    let cert = Certificate::new(
+        "check",
+        if outcome.holds {
+            CertVerdict::Pass
+        } else {
+            CertVerdict::Fail
+        },
+        json!({
+            "base": base, "m": m, "t": t, "sequence": sequence,
+            "projections": projections, "histograms": histograms,
+        }),
+        vec![],
+        vec![gartowen::reports::point_set_record("array", "points", &set)],
+        outcome.result,
+    );
+    Ok((cert.to_json(), outcome.holds, outcome.text))
+}
+
+/// `gartowen discrepancy --json` on an array: the certificate JSON text.
+#[pyfunction]
+#[pyo3(signature = (points, kind, method, root, pairs))]
+fn discrepancy(
+    py: Python<'_>,
+    points: &Bound<'_, PyAny>,
+    kind: &str,
+    method: &str,
+    root: bool,
+    pairs: Option<&str>,
+) -> PyResult<String> {
+    let kind_value = Kind::parse(kind).ok_or_else(|| {
+        PyValueError::new_err(format!("unknown kind '{kind}'; use l2star, cd, wd or gl2"))
+    })?;
+    let choice = MethodChoice::parse(method).ok_or_else(|| {
+        PyValueError::new_err(format!(
+            "unknown method '{method}'; use auto, naive, compensated, exact or fast"
+        ))
+    })?;
+    let all_pairs = match pairs {
+        None => None,
+        Some("first") => Some(false),
+        Some("all") => Some(true),
+        Some(other) => {
+            return Err(PyValueError::new_err(format!(
+                "unknown pairs '{other}'; use 'first' or 'all'"
+            )))
+        }
+    };
+    let input = read_points(points, "points")?;
+    let set = input.point_set()?;
+    let width = input.width();
+    let (n, d) = (input.n, input.dims);
+    let words = input.words;
+    let result = py.detach(|| {
+        let timed = |p: Points| -> Result<serde_json::Value, String> {
+            let started = Instant::now();
+            let r = compute(p, kind_value, choice)?;
+            Ok(gartowen::reports::discrepancy_json(
+                &r,
+                started.elapsed().as_secs_f64(),
+                root,
+            ))
+        };
+        let mut result = timed(Points {
+            words: &words,
+            dims: d,
+            width,
+        })?;
+        let mut pair_reports = Vec::new();
+        if let Some(all) = all_pairs {
+            for [i, j] in gartowen::discrepancy::curves::pair_list(d, all) {
+                let two: Vec<u64> = (0..n)
+                    .flat_map(|k| [words[k * d + i], words[k * d + j]])
+                    .collect();
+                let mut v = timed(Points {
+                    words: &two,
+                    dims: 2,
+                    width,
+                })?;
+                v["pair"] = json!([i, j]);
+                pair_reports.push(v);
+            }
+        }
+        result["pairs"] = json!(pair_reports);
+        Ok::<_, String>(result)
+    });
+    let result = result.map_err(PyValueError::new_err)?;
+    let doc = Certificate::new(
+        "discrepancy",
+        CertVerdict::Measured,
+        json!({ "kind": kind_value.name(), "method": choice.name(), "pairs": pairs, "root": root }),
+        vec![],
+        vec![gartowen::reports::point_set_record("array", "points", &set)],
+        result,
+    );
+    Ok(doc.to_json())
+}
+
+/// The verify battery on a Python function; returns the certificate JSON text, the calls,
+/// words and seconds spent in the function, and the battery's wall seconds. Re-raises the
+/// function's first exception.
+#[pyfunction]
+#[pyo3(signature = (func, name, base, width, level, claim, seed, expect))]
+#[allow(clippy::too_many_arguments)]
+fn verify(
+    py: Python<'_>,
+    func: Py<PyAny>,
+    name: String,
+    base: u64,
+    width: u32,
+    level: &str,
+    claim: &str,
+    seed: u64,
+    expect: Option<String>,
+) -> PyResult<(String, u64, u64, f64, f64)> {
+    let base_value = PowerOfTwoBase::from_base(base)
+        .map_err(|e| PyValueError::new_err(format!("base {base}: {e}")))?;
+    let width_value = match width {
+        32 => gartowen::core::Width::W32,
+        64 => gartowen::core::Width::W64,
+        w => {
+            return Err(PyValueError::new_err(format!(
+                "width {w}: the battery passes 32- or 64-bit words"
+            )))
+        }
+    };
+    let level_value = match level {
+        "quick" => Level::Quick,
+        "full" => Level::Full,
+        "exhaustive" => Level::Exhaustive,
+        other => {
+            return Err(PyValueError::new_err(format!(
+                "unknown level '{other}'; use quick, full or exhaustive"
+            )))
+        }
+    };
+    let claim_value =
+        Claim::parse(claim).map_err(|e| PyValueError::new_err(format!("claims {claim}: {e}")))?;
+    let registry = gartowen::registry();
+    if let Some(twin) = &expect {
+        let s = registry
+            .build_with(
+                twin,
+                &BuildContext {
+                    seed: 0,
+                    default_base: base_value,
+                },
+            )
+            .map_err(|e| PyValueError::new_err(format!("expect {twin}: {e}")))?;
+        if s.base() != base_value {
+            return Err(PyValueError::new_err(format!(
+                "expect {twin} scrambles in base {}, the function in base {base}",
+                s.base().base()
+            )));
+        }
+    }
+    let function = Arc::new(python_scrambler::PythonFunction::new(
+        func,
+        name.clone(),
+        width_value,
+    ));
+    let started = Instant::now();
+    let report = py.detach(|| {
+        let for_seed = function.clone();
+        let watched = function.clone();
+        let build = move |s: u64| {
+            Ok(Box::new(python_scrambler::PythonScrambler {
+                function: for_seed.clone(),
+                seed: s,
+                base: base_value,
+                claim: claim_value,
+            }) as Box<dyn Scrambler>)
+        };
+        let mut candidate =
+            match Candidate::from_builder(format!("python:{name}"), claim_value, Box::new(build)) {
+                Ok(c) => c,
+                Err(e) => return Err(e),
+            };
+        candidate.probe = Box::new(python_scrambler::PythonScrambler {
+            function: function.clone(),
+            seed,
+            base: base_value,
+            claim: claim_value,
+        });
+        candidate.invertible = false;
+        candidate.health = Box::new(move || watched.failed());
+        let registry = &registry;
+        candidate.twin = expect.as_ref().map(|twin| {
+            let twin_name = twin.clone();
+            let builder = move |s: u64| {
+                registry
+                    .build_with(
+                        &twin_name,
+                        &BuildContext {
+                            seed: s,
+                            default_base: base_value,
+                        },
+                    )
+                    .map_err(|e| e.to_string())
+            };
+            (
+                twin.clone(),
+                Box::new(builder) as Box<gartowen::verify::SeedBuilder>,
+            )
+        });
+        Ok(check_candidate(&candidate, level_value, 1))
+    });
+    let seconds = started.elapsed().as_secs_f64();
+    if let Some(e) = function.take_error() {
+        return Err(e);
+    }
+    let report = report.map_err(PyRuntimeError::new_err)?;
+    let failed = report.failed();
+    let (calls, words, python_seconds) = function.usage();
+    let cert = Certificate::new(
+        "verify",
+        if failed {
+            CertVerdict::Fail
+        } else {
+            CertVerdict::Pass
+        },
+        json!({
+            "level": level_value,
+            "node_law_seeds": gartowen::verify::node_law_seeds(level_value),
+            "family_alpha": gartowen::verify::stats::FAMILY_ALPHA,
+            "claim_override": claim,
+            "python": { "function": name, "base": base, "width": width, "seed": seed,
+                        "expect": expect, "claim": report.claim },
+        }),
+        gartowen::verify::seeds_used(seed),
+        vec![InputRecord {
+            kind: "python".into(),
+            name: name.clone(),
+            checksum_fnv1a64: None,
+            details: json!({ "calls": calls, "words": words, "python_seconds": python_seconds }),
+        }],
+        json!({ "implementations": [report] }),
+    );
+    Ok((cert.to_json(), calls, words, python_seconds, seconds))
+}
+
+/// `gartowen list --json`: the registry as JSON text.
+#[pyfunction]
+fn list_scramblers() -> PyResult<String> {
+    let rows = gartowen::registry_listing().map_err(value_error)?;
+    Ok(serde_json::to_string(&rows).expect("json"))
+}
+
+/// The native module.
+#[pymodule]
+fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(generate, m)?)?;
+    m.add_function(wrap_pyfunction!(scramble, m)?)?;
+    m.add_function(wrap_pyfunction!(check, m)?)?;
+    m.add_function(wrap_pyfunction!(discrepancy, m)?)?;
+    m.add_function(wrap_pyfunction!(verify, m)?)?;
+    m.add_function(wrap_pyfunction!(list_scramblers, m)?)?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    Ok(())
+}

@@ -1,0 +1,57 @@
+"""Vectorized NumPy scramblers written for the tests, independent of the package's code.
+
+* ``owen_per_bit``: a per-node binary Owen scramble, bit k of the output flipped by a hash of
+  (seed, dim, k, the input's top k bits); written to equal the built-in ``owen-per-bit-hash``
+  bit for bit (SplitMix64 finalizer, hash_words(seed, dim) as the key).
+* ``digital_shift``: y = x XOR S(seed, dim): every node permutation a uniform translation, but
+  all nodes of a depth share it; an imitation of Owen scrambling.
+"""
+
+import numpy as np
+
+MASK = (1 << 64) - 1
+GAMMA = 0x9E3779B97F4A7C15
+
+
+def mix64_int(z):
+    """The SplitMix64 finalizer on a Python int (exact, no overflow warnings)."""
+    z = ((z ^ (z >> 30)) * 0xBF58476D1CE4E5B9) & MASK
+    z = ((z ^ (z >> 27)) * 0x94D049BB133111EB) & MASK
+    return z ^ (z >> 31)
+
+
+def hash_words_int(*words):
+    h = GAMMA
+    for w in words:
+        h = mix64_int(h ^ mix64_int((w + GAMMA) & MASK))
+    return h
+
+
+_M1 = np.uint64(0xBF58476D1CE4E5B9)
+_M2 = np.uint64(0x94D049BB133111EB)
+
+
+def mix64(z):
+    """The SplitMix64 finalizer on a uint64 array (wrapping multiplication)."""
+    z = (z ^ (z >> np.uint64(30))) * _M1
+    z = (z ^ (z >> np.uint64(27))) * _M2
+    return z ^ (z >> np.uint64(31))
+
+
+def owen_per_bit(words, dim, seed):
+    width = 32 if words.dtype == np.uint32 else 64
+    x = words.astype(np.uint64)
+    key = np.uint64(hash_words_int(seed, dim))
+    y = x.copy()
+    for k in range(width):
+        prefix = x >> np.uint64(width - k) if k else np.zeros_like(x)
+        level = np.uint64((k << 58) & MASK)
+        flip = mix64(key ^ mix64(level ^ prefix)) & np.uint64(1)
+        y ^= flip << np.uint64(width - 1 - k)
+    return y.astype(words.dtype)
+
+
+def digital_shift(words, dim, seed):
+    width = 32 if words.dtype == np.uint32 else 64
+    shift = hash_words_int(seed, dim) >> (64 - width)
+    return words ^ words.dtype.type(shift)

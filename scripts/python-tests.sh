@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Builds the Python package into a virtual environment (target/pyvenv) with pip, the way a
+# user installs it (`pip install ./python`), then runs its pytest suite against the CLI built
+# by `cargo test` (target/debug/gartowen). Needs python3 ≥ 3.9 with venv, and PyPI for
+# maturin, numpy, scipy and pytest on the first run.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+venv=target/pyvenv
+if [ ! -x "$venv/bin/python" ]; then
+  python3 -m venv "$venv" || {
+    echo "python-tests: cannot create a virtual environment (Debian: apt-get install python3-venv)" >&2
+    exit 1
+  }
+fi
+export PATH="$PWD/$venv/bin:$PATH"
+python -m pip install -q --disable-pip-version-check "maturin>=1.9,<2" numpy scipy pytest
+python -m pip install -q --disable-pip-version-check --no-build-isolation ./python
+
+if [ -z "${GARTOWEN_BIN:-}" ]; then
+  [ -x target/debug/gartowen ] || cargo build -q -p gartowen-cli
+  export GARTOWEN_BIN="$PWD/target/debug/gartowen"
+fi
+# From the tests folder, so the installed package (not python/gartowen) is the one imported.
+cd python/tests
+python -m pytest -q -p no:cacheprovider .

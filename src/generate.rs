@@ -1,0 +1,221 @@
+//! Generating points of a built-in sequence, optionally scrambled: one validated plan shared
+//! by `gartowen generate` and the Python package, so both refuse the same requests with the
+//! same messages and produce the same words.
+
+use gartowen_core::{BuildContext, CoreError, PowerOfTwoBase, Scrambler, Width};
+use gartowen_seq::{gray_code, DigitalSequence, SeqError, SequenceKind};
+use std::fmt;
+
+/// Why a request was refused; the message names the bad value.
+#[derive(Debug, Clone, PartialEq)]
+pub enum RequestError {
+    /// A parameter out of range or inconsistent with another.
+    Invalid(String),
+    /// The sequence refused it (unknown name, too many dimensions, index out of range).
+    Sequence(SeqError),
+    /// The scrambler registry refused it (unknown name, bad option, bad base).
+    Scrambler(CoreError),
+}
+
+impl fmt::Display for RequestError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            RequestError::Invalid(m) => write!(f, "{m}"),
+            RequestError::Sequence(e) => write!(f, "{e}"),
+            RequestError::Scrambler(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl std::error::Error for RequestError {}
+
+impl From<SeqError> for RequestError {
+    fn from(e: SeqError) -> Self {
+        RequestError::Sequence(e)
+    }
+}
+
+impl From<CoreError> for RequestError {
+    fn from(e: CoreError) -> Self {
+        RequestError::Scrambler(e)
+    }
+}
+
+/// The order points are produced in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PointOrder {
+    /// Row i is index start + i.
+    Natural,
+    /// Row i is index gray(start + i) = n ⊕ (n ≫ 1): `scipy.stats.qmc.Sobol`'s row order.
+    Gray,
+}
+
+/// How many points: N = 2^m, or N itself.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PointCount {
+    /// N = 2^m.
+    Log2(u32),
+    /// N.
+    Exact(u64),
+}
+
+/// What to generate.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct GenerateRequest {
+    /// Sequence name: `sobol`, `sz4`, `sz16`.
+    pub seq: String,
+    /// Number of dimensions.
+    pub dims: usize,
+    /// Number of points.
+    pub count: PointCount,
+    /// Index of the first point.
+    pub start: u64,
+    /// Word width in bits: 32 or 64.
+    pub bits: u32,
+    /// Registry scrambler `NAME[:OPTION…]` (`none` for the plain sequence).
+    pub scramble: String,
+    /// Seed of the scrambler.
+    pub seed: u64,
+    /// Base for scramblers whose base is a parameter (default: the sequence's own); a
+    /// `:base=B` option of `scramble` takes precedence.
+    pub scramble_base: Option<u64>,
+}
+
+/// A validated request: the sequence, the index range and the scrambler instance.
+pub struct GeneratePlan {
+    /// The sequence, truncated to the requested dimensions.
+    pub seq: DigitalSequence,
+    /// Index of the first point.
+    pub start: u64,
+    /// Number of points.
+    pub count: u64,
+    /// The scrambler (the identity for `none`).
+    pub scrambler: Box<dyn Scrambler>,
+}
+
+/// The word width for `bits` (32 or 64).
+pub fn width_from_bits(bits: u32) -> Result<Width, RequestError> {
+    match bits {
+        32 => Ok(Width::W32),
+        64 => Ok(Width::W64),
+        _ => Err(RequestError::Invalid(format!(
+            "bits must be 32 or 64, not {bits}"
+        ))),
+    }
+}
+
+impl GeneratePlan {
+    /// Validates `r`: sequence and dimensions, the index range, the scrambler and its support
+    /// of the width.
+    ///
+    /// ```
+    /// use gartowen::generate::{GeneratePlan, GenerateRequest, PointCount, PointOrder};
+    /// let r = GenerateRequest {
+    ///     seq: "sobol".into(), dims: 2, count: PointCount::Log2(2), start: 0, bits: 32,
+    ///     scramble: "none".into(), seed: 0, scramble_base: None,
+    /// };
+    /// let words = GeneratePlan::new(&r).unwrap().words(PointOrder::Natural).unwrap();
+    /// assert_eq!(words, vec![0, 0, 0x8000_0000, 0x8000_0000, 0x4000_0000, 0xc000_0000,
+    ///                        0xc000_0000, 0x4000_0000]);
+    /// ```
+    pub fn new(r: &GenerateRequest) -> Result<GeneratePlan, RequestError> {
+        let kind: SequenceKind = r.seq.parse()?;
+        let width = width_from_bits(r.bits)?;
+        let seq = kind.build(r.dims, width)?;
+        let count = match r.count {
+            PointCount::Log2(m) => {
+                if m > seq.index_bits() || m >= 64 {
+                    return Err(RequestError::Invalid(format!(
+                        "log2(n) = {m} is past the {} index bits of {}",
+                        seq.index_bits(),
+                        kind.name()
+                    )));
+                }
+                1u64 << m
+            }
+            PointCount::Exact(0) => {
+                return Err(RequestError::Invalid("n must be at least 1".into()))
+            }
+            PointCount::Exact(n) => n,
+        };
+        seq.check_range(r.start, count)?;
+        let default_base = match r.scramble_base {
+            Some(b) => PowerOfTwoBase::from_base(b)?,
+            None => kind.base(),
+        };
+        let ctx = BuildContext {
+            seed: r.seed,
+            default_base,
+        };
+        let scrambler = crate::registry().build_with(&r.scramble, &ctx)?;
+        if !scrambler.supports_width(width) {
+            return Err(RequestError::Invalid(format!(
+                "scrambler {} does not support {}-bit words",
+                scrambler.name(),
+                width.bits()
+            )));
+        }
+        Ok(GeneratePlan {
+            seq,
+            start: r.start,
+            count,
+            scrambler,
+        })
+    }
+
+    /// The word width.
+    pub fn width(&self) -> Width {
+        self.seq.width()
+    }
+
+    /// The sequence index of row `i`.
+    pub fn index(&self, i: u64, order: PointOrder) -> u64 {
+        let position = self.start + i;
+        match order {
+            PointOrder::Natural => position,
+            PointOrder::Gray => gray_code(position),
+        }
+    }
+
+    /// Fills `row` (one word per dimension) with the scrambled point of row `i`.
+    pub fn row(&self, i: u64, order: PointOrder, row: &mut [u64]) {
+        let index = self.index(i, order);
+        let width = self.width();
+        for (j, x) in row.iter_mut().enumerate() {
+            *x = self
+                .scrambler
+                .scramble(self.seq.point(index, j), width, j as u32);
+        }
+    }
+
+    /// Every point, row-major (`N × dims` words), each dimension scrambled in one batch.
+    /// Refuses a size whose element count overflows or exceeds the address space.
+    pub fn words(&self, order: PointOrder) -> Result<Vec<u64>, RequestError> {
+        let dims = self.seq.dims();
+        let n = usize::try_from(self.count)
+            .ok()
+            .filter(|&n| {
+                n.checked_mul(dims)
+                    .is_some_and(|t| t <= isize::MAX as usize / 8)
+            })
+            .ok_or_else(|| {
+                RequestError::Invalid(format!(
+                    "{} points × {dims} dimensions do not fit in memory",
+                    self.count
+                ))
+            })?;
+        let width = self.width();
+        let mut out = vec![0u64; n * dims];
+        let mut column = vec![0u64; n];
+        for j in 0..dims {
+            for (i, x) in column.iter_mut().enumerate() {
+                *x = self.seq.point(self.index(i as u64, order), j);
+            }
+            self.scrambler.scramble_batch(&mut column, width, j as u32);
+            for (i, &x) in column.iter().enumerate() {
+                out[i * dims + j] = x;
+            }
+        }
+        Ok(out)
+    }
+}

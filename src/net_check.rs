@@ -1,0 +1,267 @@
+//! The net check of a point set as `gartowen check` reports it: the t-value or a (t,m,s)-net
+//! or (t,s)-sequence verdict per projection, with the first failing box in words and as JSON.
+//! Shared by the CLI and the Python package, so both report the same result for one input.
+
+use gartowen_netcheck::counting::{
+    self, check_net_with_progress, check_sequence_with_progress, histograms, implied_m,
+    t_value_with_witness,
+};
+use gartowen_netcheck::{BoxFailure, CheckBase, PointSet, ProjectionSpec};
+use serde_json::{json, Value};
+
+/// What to check.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct NetQuery {
+    /// m with N = b^m (None: implied by N; with `sequence`, the largest block exponent).
+    pub m: Option<u32>,
+    /// Check this t (a verdict) instead of reporting the t-value.
+    pub t: Option<u32>,
+    /// Check the (t,s)-sequence property over blocks of b^k consecutive points, k ≤ m.
+    pub sequence: bool,
+    /// Projections: `pairs`, `groups:G`, `blocks:G` or lists like `0,1;2,3` (None: all dims).
+    pub projections: Option<String>,
+    /// Include per-shape count histograms (with `t`, nets only).
+    pub histograms: bool,
+}
+
+/// The outcome: whether every verdict holds (true when only t-values were asked), the JSON
+/// result (one object, or a list with `projections`) and the text report.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NetOutcome {
+    /// Every checked property holds.
+    pub holds: bool,
+    /// The JSON result, as the `result` of `gartowen check --json`.
+    pub result: Value,
+    /// The text `gartowen check` prints.
+    pub text: String,
+}
+
+/// Progress of a long check: `start` before each projection with the number of units, then
+/// `advance` by units done.
+pub trait Progress: Sync {
+    /// A projection begins with `total` units (0 when unknown) of kind `what`.
+    fn start(&self, total: u64, what: &str);
+    /// `k` more units are done.
+    fn advance(&self, k: u64);
+    /// The projection is done.
+    fn finish(&self);
+}
+
+/// No progress display.
+pub struct Silent;
+
+impl Progress for Silent {
+    fn start(&self, _total: u64, _what: &str) {}
+    fn advance(&self, _k: u64) {}
+    fn finish(&self) {}
+}
+
+/// One failing box in words: its shape and the sides of the refined dimensions.
+pub fn describe_failure(f: &BoxFailure, base: u64) -> String {
+    // Only refined dimensions (d_j > 0) restrict the box; the others span [0,1).
+    let sides: Vec<String> = f
+        .shape
+        .iter()
+        .zip(&f.box_index)
+        .enumerate()
+        .filter(|(_, (&d, _))| d > 0)
+        .map(|(j, (&d, &a))| format!("dim {j} in [{a}, {})/{base}^{d}", a + 1))
+        .collect();
+    format!(
+        "shape {:?}: the box {} holds {} points, every box must hold {}",
+        f.shape,
+        if sides.is_empty() {
+            "[0,1)^s".to_string()
+        } else {
+            sides.join(", ")
+        },
+        f.count,
+        f.expected
+    )
+}
+
+/// Runs the check `q` on `points` in base `base`; an error names the bad parameter.
+///
+/// ```
+/// use gartowen::net_check::{check_points, NetQuery, Silent};
+/// use gartowen::netcheck::{CheckBase, PointSet};
+/// use gartowen::core::Width;
+/// // The 4 points (0,0), (1/2,1/2), (1/4,3/4), (3/4,1/4): a (0,2,2)-net in base 2.
+/// let p = PointSet::from_flat(Width::W32, 2, &[0, 0, 1 << 31, 1 << 31, 1 << 30, 3 << 30,
+///                                              3 << 30, 1 << 30]).unwrap();
+/// let base = CheckBase::new(2).unwrap();
+/// let out = check_points(&p, base, &NetQuery::default(), &Silent).unwrap();
+/// assert_eq!(out.result["t"], 0);
+/// ```
+pub fn check_points(
+    points: &PointSet,
+    base: CheckBase,
+    q: &NetQuery,
+    progress: &dyn Progress,
+) -> Result<NetOutcome, String> {
+    let projections = match &q.projections {
+        Some(spec) => Some(
+            spec.parse::<ProjectionSpec>()
+                .map_err(|e| e.to_string())?
+                .expand(points.dims())
+                .map_err(|e| e.to_string())?,
+        ),
+        None => None,
+    };
+    let targets: Vec<(Vec<usize>, PointSet)> = match &projections {
+        None => vec![((0..points.dims()).collect(), points.clone())],
+        Some(list) => list
+            .iter()
+            .map(|p| Ok((p.clone(), points.project(p).map_err(|e| e.to_string())?)))
+            .collect::<Result<_, String>>()?,
+    };
+    let (holds, mut results, text) = if q.sequence {
+        sequences(q, base, points, &targets, progress)?
+    } else {
+        nets(q, base, points, &targets, progress)?
+    };
+    let result = if projections.is_none() {
+        results.pop().expect("one result")
+    } else {
+        json!(results)
+    };
+    Ok(NetOutcome {
+        holds,
+        result,
+        text,
+    })
+}
+
+type Parts = (bool, Vec<Value>, String);
+
+fn nets(
+    q: &NetQuery,
+    base: CheckBase,
+    points: &PointSet,
+    targets: &[(Vec<usize>, PointSet)],
+    progress: &dyn Progress,
+) -> Result<Parts, String> {
+    let err = |e: gartowen_netcheck::NetError| e.to_string();
+    let m = match q.m {
+        Some(m) => m,
+        None => implied_m(points, base).map_err(err)?,
+    };
+    let b = base.get();
+    let mut holds = true;
+    let mut results = Vec::new();
+    let mut text = String::new();
+    for (dims, set) in targets {
+        match q.t {
+            Some(t) => {
+                let total =
+                    gartowen_netcheck::shapes::shape_count(m.saturating_sub(t), set.dims()) as u64;
+                progress.start(total, "shapes");
+                let r = check_net_with_progress(set, base, m, t, &|k| progress.advance(k))
+                    .map_err(err)?;
+                progress.finish();
+                holds &= r.holds;
+                text += &format!(
+                    "dims {dims:?}: ({t},{m},{})-net in base {b}: {} ({} shapes checked)\n",
+                    set.dims(),
+                    if r.holds { "holds" } else { "FAILS" },
+                    r.shapes_checked
+                );
+                if let Some(f) = &r.first_failure {
+                    text += &format!("  first failure: {}\n", describe_failure(f, b));
+                }
+                let mut v = serde_json::to_value(&r).expect("serializable");
+                v["projection"] = json!(dims);
+                if q.histograms {
+                    v["histograms"] =
+                        serde_json::to_value(histograms(set, base, m, t).map_err(err)?)
+                            .expect("json");
+                }
+                results.push(v);
+            }
+            None => {
+                let (t, witness) = t_value_with_witness(set, base, m).map_err(err)?;
+                text += &format!(
+                    "dims {dims:?}: t = {t} (m = {m}, s = {}, base {b})\n",
+                    set.dims()
+                );
+                if let Some(f) = witness.as_ref().and_then(|w| w.first_failure.as_ref()) {
+                    text += &format!(
+                        "  not a ({},{m},{})-net: {}\n",
+                        t - 1,
+                        set.dims(),
+                        describe_failure(f, b)
+                    );
+                }
+                results.push(json!({
+                    "projection": dims, "t": t, "m": m, "s": set.dims(), "b": b,
+                    "witness_at_t_minus_1": witness.map(|w| serde_json::to_value(&w).expect("json")),
+                }));
+            }
+        }
+    }
+    Ok((holds, results, text))
+}
+
+fn sequences(
+    q: &NetQuery,
+    base: CheckBase,
+    points: &PointSet,
+    targets: &[(Vec<usize>, PointSet)],
+    progress: &dyn Progress,
+) -> Result<Parts, String> {
+    let err = |e: gartowen_netcheck::NetError| e.to_string();
+    let max_m = match q.m {
+        Some(m) => m,
+        None => (0..=32u32)
+            .take_while(|&k| base.pow(k).is_some_and(|p| p <= points.len() as u64))
+            .last()
+            .unwrap_or(0),
+    };
+    let b = base.get();
+    let mut holds = true;
+    let mut results = Vec::new();
+    let mut text = String::new();
+    for (dims, set) in targets {
+        let (t, r) = match q.t {
+            Some(t) => {
+                progress.start(0, "block-shapes");
+                let r = check_sequence_with_progress(set, base, t, max_m, &|k| progress.advance(k))
+                    .map_err(err)?;
+                progress.finish();
+                (t, r)
+            }
+            None => {
+                // The least t whose sequence check holds.
+                let mut t = 0;
+                loop {
+                    let r = counting::check_sequence(set, base, t, max_m).map_err(err)?;
+                    if r.holds || t == max_m {
+                        break (t, r);
+                    }
+                    t += 1;
+                }
+            }
+        };
+        if q.t.is_some() {
+            holds &= r.holds;
+        }
+        text += &format!(
+            "dims {dims:?}: ({t},{})-sequence in base {b} over blocks of {b}^k points, k ≤ {max_m}: {} ({} blocks)\n",
+            set.dims(),
+            if r.holds { "holds" } else { "FAILS" },
+            r.blocks_checked
+        );
+        if let Some(f) = &r.first_failure {
+            text += &format!(
+                "  first failure: block {} of {b}^{} points, {}\n",
+                f.block,
+                f.m,
+                describe_failure(&f.failure, b)
+            );
+        }
+        let mut v = serde_json::to_value(&r).expect("serializable");
+        v["projection"] = json!(dims);
+        results.push(v);
+    }
+    Ok((holds, results, text))
+}
