@@ -1,0 +1,36 @@
+"""The README's Python examples and examples/python/verify_my_scrambler.py run as documented."""
+
+import pathlib
+import re
+import subprocess
+import sys
+
+REPO = pathlib.Path(__file__).resolve().parents[2]
+
+
+def readme_python_blocks():
+    text = (REPO / "README.md").read_text()
+    section = text.split("\n## Python\n", 1)[1].split("\n## ", 1)[0]
+    return re.findall(r"```python\n(.*?)```", section, re.S)
+
+
+def test_readme_examples_run_and_say_what_they_print(capsys):
+    blocks = readme_python_blocks()
+    assert len(blocks) >= 5  # one per function at least
+    namespace = {}
+    for block in blocks:
+        exec(compile(block, "README.md", "exec"), namespace)
+    # The claims the comments make.
+    assert namespace["r"].passed is False
+    assert {"pair-law", "flip-rank"} <= {c["check"] for c in namespace["r"].failures}
+    assert namespace["e"].exact is not None
+    assert namespace["d"].rel_error_bound <= 1e-12
+
+
+def test_verify_my_scrambler_example():
+    script = REPO / "examples" / "python" / "verify_my_scrambler.py"
+    r = subprocess.run([sys.executable, str(script)], capture_output=True, text=True)
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert "as expected" in r.stdout
+    assert "python:my_owen (claim owen): pass" in r.stdout
+    assert "python:my_shift (claim owen): FAIL" in r.stdout
