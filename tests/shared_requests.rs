@@ -353,6 +353,28 @@ fn method_choice_auto_picks_what_it_can_prove() {
             .method,
         Method::Compensated
     );
+    // Where the compensated bound exceeds 1e-12 (8-D, 512 points, CD: about 2e-11), auto
+    // falls back to the exact method; elsewhere it keeps the compensated value.
+    let set = sobol_set(512, 8);
+    let eight: Vec<u64> = (0..512).flat_map(|i| set.point(i)).collect();
+    let p8 = Points {
+        words: &eight,
+        dims: 8,
+        width: Width::W32,
+    };
+    let mut fell_back = 0;
+    for kind in Kind::ALL {
+        let c = compute(p8, kind, MethodChoice::Compensated).unwrap();
+        let auto = compute(p8, kind, MethodChoice::Auto).unwrap();
+        if c.rel_error_bound.unwrap() > 1e-12 {
+            fell_back += 1;
+            assert_eq!(auto.method, Method::Exact, "{kind:?}");
+        } else {
+            assert_eq!(auto.method, Method::Compensated, "{kind:?}");
+            assert_eq!(auto.value, c.value);
+        }
+    }
+    assert!(fell_back > 0, "no kind exercised the fallback");
     for name in ["auto", "naive", "compensated", "exact", "fast"] {
         assert_eq!(MethodChoice::parse(name).unwrap().name(), name);
     }
