@@ -83,7 +83,7 @@ fn scramble<'py>(
 ) -> PyResult<Bound<'py, PyAny>> {
     let input = read_points(points, "points")?;
     let width = input.width();
-    let (n, dims) = (input.n, input.dims);
+    let (n, dims, element) = (input.n, input.dims, input.element);
     let mut flat = input.words;
     py.detach(|| {
         let ctx = BuildContext {
@@ -95,8 +95,13 @@ fn scramble<'py>(
         };
         let s = gartowen::registry().build_with(name, &ctx)?;
         if !s.supports_width(width) {
+            let hint = if element == Element::F64 {
+                "; float64 points are read as 64-bit words: pass uint32 words for a 32-bit scrambler"
+            } else {
+                ""
+            };
             return Err(RequestError::Invalid(format!(
-                "scrambler {} does not support the {}-bit words of points",
+                "scrambler {} does not support the {}-bit words of points{hint}",
                 s.name(),
                 width.bits()
             )));
@@ -114,7 +119,7 @@ fn scramble<'py>(
         Ok::<(), RequestError>(())
     })
     .map_err(value_error)?;
-    to_array(py, flat, n, dims, width, input.element)
+    to_array(py, flat, n, dims, width, element)
 }
 
 /// `gartowen check --json` on an array: the certificate JSON text and whether it holds.

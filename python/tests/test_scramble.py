@@ -90,3 +90,8 @@ def test_bad_scrambler_arguments():
         gartowen.scramble(x, "nope", 1)
     with pytest.raises(ValueError, match="64-bit"):
         gartowen.scramble(np.zeros((4, 1), dtype=np.uint64), "lk-hash", 1)
+    # Floats are 64-bit words; the message says how to reach a 32-bit scrambler.
+    with pytest.raises(ValueError, match="pass uint32 words"):
+        gartowen.scramble(np.zeros((4, 1)), "lk-hash", 1)
+    y = gartowen.scramble((np.arange(4) * 2**30).astype(np.uint32), "lk-hash", 1)
+    assert y.dtype == np.uint32 and len(set(y.tolist())) == 4

@@ -15,7 +15,7 @@ const ROWS_PER_CHUNK: usize = 32;
 /// Dimensions up to which products are formed exactly.
 const EXACT_PRODUCT_DIMS: usize = 4;
 
-/// The single factor in double-double: exact for coordinates of ≤ 52 bits (every part below is
+/// The single factor in double-double: exact for coordinates of ≤ [`crate::EXACT_FLOAT_BITS`] bits (every part below is
 /// an exact f64 and the one product is error-free).
 #[inline(always)]
 fn single_dd(kind: Kind, x: f64) -> Dd {
@@ -208,6 +208,7 @@ pub fn compensated(points: Points, kind: Kind) -> Discrepancy {
         method: Method::Compensated,
         value,
         exact: None,
-        rel_error_bound: Some(bound),
+        // The bound assumes exact coordinates; truncated 64-bit words void it.
+        rel_error_bound: points.exact_in_f64().then_some(bound),
     }
 }

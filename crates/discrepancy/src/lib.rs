@@ -31,6 +31,10 @@ use gartowen_core::Width;
 use num_rational::BigRational;
 use serde::Serialize;
 
+/// The most significant fractional bits a coordinate may have for the float methods' error
+/// bounds to hold (a 52-bit coordinate already rounds in CD's pair factor).
+pub const EXACT_FLOAT_BITS: u32 = 50;
+
 /// Points as W-bit words, row-major: point i, dimension k at `words[i·d + k]`.
 #[derive(Debug, Clone, Copy)]
 pub struct Points<'a> {
@@ -59,6 +63,27 @@ impl<'a> Points<'a> {
             .iter()
             .map(|&w| gartowen_core::word_to_f64(w, self.width))
             .collect()
+    }
+
+    /// Whether every coordinate has at most [`EXACT_FLOAT_BITS`] significant fractional bits,
+    /// the headroom the float methods' error bounds assume (their factors, such as CD's
+    /// 1 + |x − ½|/2 + |y − ½|/2 − |x − y|/2, are then exact in f64). Always true for W ≤ 50;
+    /// for 64-bit words, when the low 14 bits are zero. Otherwise the naive and compensated
+    /// methods report no bound, and `auto` computes exactly.
+    ///
+    /// ```
+    /// use gartowen_core::Width;
+    /// use gartowen_discrepancy::Points;
+    /// let p = |w: &[u64]| Points { words: w, dims: 1, width: Width::W64 };
+    /// assert!(p(&[1 << 14, 0]).exact_in_f64());
+    /// assert!(!p(&[(1 << 14) | (1 << 12)]).exact_in_f64());
+    /// ```
+    pub fn exact_in_f64(&self) -> bool {
+        let w = self.width.bits();
+        w <= EXACT_FLOAT_BITS || {
+            let low = (1u64 << (w - EXACT_FLOAT_BITS)) - 1;
+            self.words.iter().all(|&x| x & low == 0)
+        }
     }
 
     /// Point i.

@@ -261,3 +261,58 @@ fn compensated_bound_holds_when_n_is_not_a_power_of_two() {
         }
     }
 }
+
+/// 64-bit words are truncated to f64 before the float methods run: their bounds assumed exact
+/// coordinates and once claimed 1.1e-16 where the error was 1.4e-10 (3-D, 4096 points, CD).
+/// Now they claim nothing, and `auto` computes exactly.
+#[test]
+fn float_methods_claim_no_bound_for_truncated_64_bit_words() {
+    use gartowen_discrepancy::choice::{compute, MethodChoice};
+    let mut rng = gartowen_core::SplitMix64::new(77);
+    let words: Vec<u64> = (0..512 * 3).map(|_| rng.next_u64()).collect();
+    let p = Points {
+        words: &words,
+        dims: 3,
+        width: Width::W64,
+    };
+    assert!(!p.exact_in_f64());
+    for kind in Kind::ALL {
+        assert_eq!(compensated(p, kind).rel_error_bound, None, "{kind:?}");
+        assert_eq!(naive(p, kind).rel_error_bound, None, "{kind:?}");
+        let auto = compute(p, kind, MethodChoice::Auto).unwrap();
+        let truth = exact(p, kind).exact.unwrap();
+        assert!(rel(auto.value, &truth) <= auto.rel_error_bound.unwrap());
+    }
+    // 52 significant bits are exact in f64, but CD's pair factor rounds them: no bound either.
+    let w52: Vec<u64> = words.iter().map(|w| w & !0xFFF).collect();
+    let p52 = Points {
+        words: &w52,
+        dims: 3,
+        width: Width::W64,
+    };
+    assert_eq!(compensated(p52, Kind::Centered).rel_error_bound, None);
+    // 50 significant bits: the bound stands, for every kind.
+    let short: Vec<u64> = words.iter().map(|w| w & !0x3FFF).collect();
+    let p = Points {
+        words: &short,
+        dims: 3,
+        width: Width::W64,
+    };
+    assert!(p.exact_in_f64());
+    // 3-D (exact products) and 8-D (f64 products), same words.
+    for dims in [3, 8] {
+        let p = Points {
+            words: &short[..short.len() / dims * dims],
+            dims,
+            width: Width::W64,
+        };
+        for kind in Kind::ALL {
+            let c = compensated(p, kind);
+            let truth = exact(p, kind).exact.unwrap();
+            assert!(
+                rel(c.value, &truth) <= c.rel_error_bound.unwrap(),
+                "{kind:?} {dims}-D"
+            );
+        }
+    }
+}
