@@ -55,10 +55,87 @@ pub fn read_points(path: &Path, format: InputFormat) -> Result<PointSet, CliErro
     }
 }
 
+/// The shape a .npy header declares and the number of data bytes after the header, read
+/// without trusting the header: the header length must lie inside the file and the shape's
+/// element count must not overflow (npyz would multiply it unchecked).
+fn npy_declared_shape(bytes: &[u8]) -> Result<(Vec<u64>, usize), String> {
+    if bytes.len() < 10 || &bytes[..6] != b"\x93NUMPY" {
+        return Err("not a valid .npy file: no NUMPY magic".into());
+    }
+    let (len, start) = match bytes[6] {
+        1 => (u16::from_le_bytes([bytes[8], bytes[9]]) as usize, 10usize),
+        2 | 3 if bytes.len() >= 12 => (
+            u32::from_le_bytes([bytes[8], bytes[9], bytes[10], bytes[11]]) as usize,
+            12,
+        ),
+        v => return Err(format!("not a valid .npy file: format version {v}")),
+    };
+    let end = start
+        .checked_add(len)
+        .filter(|&e| e <= bytes.len())
+        .ok_or_else(|| {
+            format!(
+                "not a valid .npy file: the header claims {len} bytes, the file has {}",
+                bytes.len()
+            )
+        })?;
+    let text = String::from_utf8_lossy(&bytes[start..end]);
+    let shape_text = text
+        .split_once("'shape'")
+        .and_then(|(_, rest)| rest.split_once('('))
+        .and_then(|(_, rest)| rest.split_once(')'))
+        .map(|(inside, _)| inside)
+        .ok_or("not a valid .npy file: no shape in the header")?;
+    let shape = shape_text
+        .split(',')
+        .map(str::trim)
+        .filter(|t| !t.is_empty())
+        .map(|t| {
+            t.trim_end_matches('L')
+                .parse::<u64>()
+                .map_err(|_| format!("shape entry '{t}' is not a 64-bit size"))
+        })
+        .collect::<Result<Vec<u64>, String>>()?;
+    if shape
+        .iter()
+        .try_fold(1u64, |a, &d| a.checked_mul(d))
+        .is_none()
+    {
+        return Err(format!("shape {shape:?} overflows 64 bits"));
+    }
+    Ok((shape, bytes.len() - end))
+}
+
 fn read_npy(path: &Path, bytes: &[u8]) -> Result<PointSet, CliError> {
+    let (declared, data_bytes) = npy_declared_shape(bytes).map_err(|e| bad(path, e))?;
     let npy =
         npyz::NpyFile::new(bytes).map_err(|e| bad(path, format!("not a valid .npy file: {e}")))?;
     let shape = npy.shape().to_vec();
+    if shape != declared {
+        return Err(bad(
+            path,
+            format!("unreadable shape in the header: {shape:?}"),
+        ));
+    }
+    // The element count must match the data that follows, byte for byte.
+    let elements = npy.len();
+    let item = match npy
+        .dtype()
+        .descr()
+        .trim_matches('\'')
+        .trim_start_matches(['<', '|', '='])
+    {
+        "u4" => 4u64,
+        _ => 8,
+    };
+    if elements.checked_mul(item) != Some(data_bytes as u64) {
+        return Err(bad(
+            path,
+            format!(
+                "the header's shape {shape:?} ({elements} elements of {item} bytes) does not match the {data_bytes} data bytes"
+            ),
+        ));
+    }
     let (n, dims) = match shape.as_slice() {
         [n] => (*n as usize, 1usize),
         [n, d] => (*n as usize, *d as usize),

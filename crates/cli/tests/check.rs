@@ -177,3 +177,63 @@ fn bad_input_exits_2_with_a_message() {
     let o = gartowen(&["check", "/nonexistent/file.csv", "--base", "2"]);
     assert_eq!(o.status.code(), Some(2));
 }
+
+/// A .npy file whose header is v1 with the given shape text, over `values` float64 words.
+fn npy_with_shape(dir: &Path, name: &str, shape: &str, values: &[f64]) -> String {
+    let mut header = format!("{{'descr': '<f8', 'fortran_order': False, 'shape': {shape}, }}");
+    // Pad so that magic (6) + version (2) + length (2) + header + newline is a multiple of 64.
+    while (10 + header.len() + 1) % 64 != 0 {
+        header.push(' ');
+    }
+    header.push('\n');
+    let mut bytes = b"\x93NUMPY\x01\x00".to_vec();
+    bytes.extend_from_slice(&(header.len() as u16).to_le_bytes());
+    bytes.extend_from_slice(header.as_bytes());
+    for v in values {
+        bytes.extend_from_slice(&v.to_le_bytes());
+    }
+    let path = dir.join(name);
+    std::fs::write(&path, bytes).unwrap();
+    path.to_str().unwrap().to_string()
+}
+
+/// A header that lies about the shape is refused (exit 2, the shape named), never believed:
+/// (2^63 + 4, 2) once wrapped to 8 elements and read 4 × 2 points; (2^61 + 1, 8) became one
+/// point in 8 dimensions and was certified "pass".
+#[test]
+fn a_lying_npy_header_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let eight = [0.0, 0.5, 0.25, 0.75, 0.125, 0.625, 0.375, 0.875];
+    let honest = npy_with_shape(dir.path(), "ok.npy", "(4, 2)", &eight);
+    assert!(gartowen(&["check", &honest, "--base", "2"])
+        .status
+        .success());
+    for (name, shape) in [
+        ("wrap.npy", "(9223372036854775812, 2)"),
+        ("one.npy", "(2305843009213693953, 8)"),
+        ("short.npy", "(5, 2)"),
+        ("long.npy", "(3, 2)"),
+    ] {
+        let path = npy_with_shape(dir.path(), name, shape, &eight);
+        for cmd in [
+            vec!["check", path.as_str(), "--base", "2", "--json"],
+            vec!["discrepancy", path.as_str()],
+        ] {
+            let out = gartowen(&cmd);
+            let err = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(out.status.code(), Some(2), "{name} {cmd:?}: {err}");
+            assert!(err.contains(name) && err.contains("shape"), "{err}");
+            assert!(out.stdout.is_empty(), "nothing certified for {name}");
+        }
+    }
+    // A v2 header claiming 2^32 - 1 bytes is refused before anything is allocated.
+    let mut v2 = b"\x93NUMPY\x02\x00".to_vec();
+    v2.extend_from_slice(&u32::MAX.to_le_bytes());
+    v2.extend_from_slice(b"{'descr': '<f8'");
+    let path = dir.path().join("huge.npy");
+    std::fs::write(&path, v2).unwrap();
+    let out = gartowen(&["check", path.to_str().unwrap(), "--base", "2"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("header claims 4294967295 bytes"), "{err}");
+}
