@@ -282,7 +282,10 @@ class DiscrepancyResult:
         value: D^2 as a float (D with ``root=True``); correctly rounded for exact and fast.
         squared: whether ``value`` is D^2.
         exact: the exact rational D^2 where computed (exact and fast methods), else None.
-        rel_error_bound: a proven bound on |value - D^2| / D^2 where known (0 for exact).
+        rel_error_bound: a proven bound on |value - D^2| / D^2 where known: 0 when ``value``
+            is D^2 exactly, 2^-53 for a correctly rounded exact value; None when no bound is
+            proven for this input (64-bit words with more than 50 significant bits, values
+            outside the float range: ``value`` is then inf or 0 and ``exact`` holds D^2).
         seconds: time of the computation.
         pair: the two dimensions of a pair result, else None.
         pairs: the pair results requested with ``pairs=``.
@@ -306,12 +309,17 @@ class DiscrepancyResult:
 
 def _discrepancy_result(r: Dict[str, Any], cert: Optional[Dict[str, Any]] = None) -> DiscrepancyResult:
     value = r["value"]
+    exact = None if r["exact"] is None else Fraction(r["exact"])
+    if value is None:
+        # JSON has no infinity: a value past f64's range comes as null, its exact rational
+        # (when computed) tells the sign.
+        value = float("nan") if exact is None else (float("inf") if exact > 0 else float("-inf"))
     return DiscrepancyResult(
         kind=r["kind"],
         method=r["method"],
-        value=float("nan") if value is None else float(value),
+        value=float(value),
         squared=r["squared"],
-        exact=None if r["exact"] is None else Fraction(r["exact"]),
+        exact=exact,
         rel_error_bound=r["rel_error_bound"],
         seconds=r["seconds"],
         pair=None if r.get("pair") is None else tuple(r["pair"]),

@@ -106,3 +106,20 @@ def test_nan_is_refused():
     x[3, 0] = np.nan
     with pytest.raises(ValueError, match="point 3, dimension 0"):
         gartowen.discrepancy(x)
+
+
+def test_values_outside_the_float_range():
+    # One point in 2600 dimensions: WD's D^2 overflows a float, L2-star's underflows.
+    x = ((np.arange(2600) * 7919) % 1024 / 1024.0).reshape(1, -1)
+    wd = gartowen.discrepancy(x, "wd")
+    assert wd.value == float("inf") and wd.rel_error_bound is None and wd.exact > 10**308
+    l2 = gartowen.discrepancy(x, "l2star")
+    assert l2.value == 0.0 and l2.rel_error_bound is None and 0 < l2.exact < Fraction(1, 10**308)
+
+
+def test_64_bit_words_get_no_float_bound():
+    w = gartowen.generate("sobol", 3, 256, scramble="owen-oracle", seed=5, bits=64, words=True)
+    assert gartowen.discrepancy(w, "cd", "compensated").rel_error_bound is None
+    auto = gartowen.discrepancy(w, "cd")
+    assert auto.method == "exact"
+    assert abs(Fraction(auto.value) - auto.exact) <= Fraction(auto.rel_error_bound) * auto.exact

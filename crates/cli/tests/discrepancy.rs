@@ -103,3 +103,34 @@ fn bad_input_and_usage_exit_2() {
         assert!(!String::from_utf8_lossy(&o.stderr).contains("panicked"));
     }
 }
+
+/// High dimensions: c0 = (4/3)^d overflows f64 and 3^-d underflows. No panic (WD and GL2 once
+/// panicked at "finite"), no false claim ("0 … rel. error ≤ 0"): the value is reported with
+/// no relative bound, the exact rational in the JSON.
+#[test]
+fn values_outside_the_f64_range_are_reported_honestly() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("wide.csv");
+    let row: Vec<String> = (0..2600)
+        .map(|k| format!("{}", ((k * 7919) % 1024) as f64 / 1024.0))
+        .collect();
+    std::fs::write(&path, row.join(",") + "\n").unwrap();
+    let file = path.to_str().unwrap();
+    for kind in ["wd", "gl2", "l2star"] {
+        let out = gartowen(&["discrepancy", file, "--kind", kind, "--json"]);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(0), "{kind}: {err}");
+        let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        let r = &doc["result"];
+        assert_eq!(r["rel_error_bound"], serde_json::Value::Null, "{kind}: {r}");
+        assert!(r["exact"].is_string(), "{kind}");
+        let text = gartowen(&["discrepancy", file, "--kind", kind]);
+        let line = String::from_utf8_lossy(&text.stdout);
+        assert!(line.contains("outside the f64 range"), "{kind}: {line}");
+        assert!(!line.contains("rel. error ≤ 0"), "{line}");
+    }
+    // CD stays in range at this size: a normal value with its bound.
+    let out = gartowen(&["discrepancy", file, "--kind", "cd", "--json"]);
+    let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!(doc["result"]["rel_error_bound"].as_f64().unwrap() <= 1e-12);
+}

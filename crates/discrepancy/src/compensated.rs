@@ -208,7 +208,9 @@ pub fn compensated(points: Points, kind: Kind) -> Discrepancy {
         method: Method::Compensated,
         value,
         exact: None,
-        // The bound assumes exact coordinates; truncated 64-bit words void it.
-        rel_error_bound: points.exact_in_f64().then_some(bound),
+        // The bound assumes exact coordinates (truncated 64-bit words void it) and a value in
+        // f64's normal range (in high dimensions c0 and the sums overflow or underflow).
+        rel_error_bound: (points.exact_in_f64() && value.is_normal() && bound.is_finite())
+            .then_some(bound),
     }
 }

@@ -80,6 +80,6 @@ pub fn exact(points: Points, kind: Kind) -> Discrepancy {
         method: Method::Exact,
         value,
         exact: Some(r),
-        rel_error_bound: Some(bound),
+        rel_error_bound: bound,
     }
 }

@@ -163,7 +163,7 @@ pub fn fast(points: Points) -> Option<Discrepancy> {
         method: Method::Fast,
         value,
         exact: Some(r),
-        rel_error_bound: Some(bound),
+        rel_error_bound: bound,
     })
 }
 

@@ -27,17 +27,20 @@ pub fn c1(kind: Kind, d: usize) -> BigRational {
 }
 
 /// The relative error bound of `value`, the correctly rounded f64 of `r`: 0 when it is `r`
-/// exactly, else the unit roundoff 2^-53 (the exact methods return a rounded float, so their
-/// bound is not 0 unless the rounding was exact).
-pub fn rounding_bound(r: &BigRational, value: f64) -> f64 {
+/// exactly, the unit roundoff 2^-53 when `r` lies in f64's normal range, and None outside it
+/// (an overflow to ±inf or an underflow has no relative bound).
+pub fn rounding_bound(r: &BigRational, value: f64) -> Option<f64> {
     if BigRational::from_float(value).is_some_and(|v| &v == r) {
-        0.0
+        Some(0.0)
+    } else if value.is_normal() {
+        Some(f64::EPSILON / 2.0)
     } else {
-        f64::EPSILON / 2.0
+        None
     }
 }
 
-/// The f64 nearest to `r` (ties to even), for |r| in the normal range.
+/// The f64 nearest to `r` (ties to even) for |r| in the normal range; ±inf above it, and
+/// below it a subnormal or zero (there the scaling may round twice).
 pub fn to_f64(r: &BigRational) -> f64 {
     if r.is_zero() {
         return 0.0;
@@ -69,7 +72,12 @@ pub fn to_f64(r: &BigRational) -> f64 {
     if round_bit == 1 && (!rem.is_zero() || mant & 1 == 1) {
         mant += 1;
     }
-    let magnitude = mant as f64 * 2f64.powi((1 - s) as i32);
+    // mant < 2^54, so the value is mant · 2^(1 − s); scale in two steps so that neither
+    // factor overflows or underflows on its own.
+    // The first product is exact whenever the result is normal; past the range the second
+    // product gives inf, or rounds into the subnormals.
+    let e = (1 - s).clamp(-4000, 4000) as i32;
+    let magnitude = mant as f64 * 2f64.powi(e / 2) * 2f64.powi(e - e / 2);
     if r.is_negative() {
         -magnitude
     } else {
@@ -80,7 +88,11 @@ pub fn to_f64(r: &BigRational) -> f64 {
 /// `r` as a double-double (hi = nearest f64, lo = nearest f64 of the remainder).
 pub fn to_dd(r: &BigRational) -> Dd {
     let hi = to_f64(r);
-    let rest = r - BigRational::from_float(hi).expect("finite");
+    let Some(h) = BigRational::from_float(hi) else {
+        // |r| overflows f64: there is nothing finite to refine.
+        return Dd { hi, lo: 0.0 };
+    };
+    let rest = r - h;
     Dd {
         hi,
         lo: to_f64(&rest),

@@ -147,9 +147,12 @@ pub fn run(a: DiscrepancyArgs) -> Result<ExitCode, CliError> {
             },
             joint.method,
             secs,
-            joint
-                .rel_error_bound
-                .map_or(String::new(), |b| format!(", rel. error ≤ {b:.1e}"))
+            match (joint.rel_error_bound, &joint.exact) {
+                (Some(b), _) => format!(", rel. error ≤ {b:.1e}"),
+                // Exact, but the f64 overflowed or underflowed: say where the value is.
+                (None, Some(_)) => ", outside the f64 range: --json has the exact rational".into(),
+                (None, None) => ", no error bound for this input".into(),
+            }
         );
         for p in &pair_reports {
             crate::outln!(
