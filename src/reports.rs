@@ -21,8 +21,8 @@ pub fn point_set_record(kind: &str, name: &str, points: &PointSet) -> InputRecor
 }
 
 /// A discrepancy result as `gartowen discrepancy --json` reports it: kind, method, value (D²,
-/// or D with `root`), the exact rational D² as `p/q` where computed, the relative error bound
-/// and the seconds it took.
+/// or D with `root`), the exact rational D² as decimal `p/q` where computed (and in hex as
+/// `exact_hex`), the relative error bound and the seconds it took.
 pub fn discrepancy_json(d: &Discrepancy, seconds: f64, root: bool) -> Value {
     let value = if root { d.value.sqrt() } else { d.value };
     json!({
@@ -31,6 +31,11 @@ pub fn discrepancy_json(d: &Discrepancy, seconds: f64, root: bool) -> Value {
         "value": value,
         "squared": !root,
         "exact": d.exact.as_ref().map(|r| r.to_string()),
+        // The same rational in hex, which readers convert without decimal digit limits
+        // (Python refuses decimal integers past 4300 digits).
+        "exact_hex": d.exact.as_ref().map(|r| {
+            format!("{}/{}", r.numer().to_str_radix(16), r.denom().to_str_radix(16))
+        }),
         "rel_error_bound": d.rel_error_bound,
         "seconds": seconds,
     })

@@ -309,7 +309,11 @@ class DiscrepancyResult:
 
 def _discrepancy_result(r: Dict[str, Any], cert: Optional[Dict[str, Any]] = None) -> DiscrepancyResult:
     value = r["value"]
-    exact = None if r["exact"] is None else Fraction(r["exact"])
+    exact = None
+    if r.get("exact_hex") is not None:
+        # Hex, not decimal: Python limits decimal integer conversion to 4300 digits.
+        num, den = r["exact_hex"].split("/")
+        exact = Fraction(int(num, 16), int(den, 16))
     if value is None:
         # JSON has no infinity: a value past f64's range comes as null, its exact rational
         # (when computed) tells the sign.
