@@ -380,3 +380,20 @@ mod protocol_fuzz {
         }
     }
 }
+
+/// A timeout past what `Instant` can add (once a panic in the reply wait, with the child
+/// left running) waits like a very long one: the answer comes back.
+#[test]
+fn an_enormous_timeout_does_not_panic() {
+    let p = ExternalProcess::spawn(
+        examples().0.to_str().unwrap(),
+        PowerOfTwoBase::B2,
+        Width::W32,
+        Duration::from_secs(u64::MAX),
+    )
+    .unwrap();
+    let out = p.scramble_batch(1, 0, &[0, 1, 2]).unwrap();
+    assert_eq!(out.len(), 3);
+    let s = gartowen::registry().build("owen-per-bit-hash", 1).unwrap();
+    assert_eq!(out[2], s.scramble(2, Width::W32, 0));
+}

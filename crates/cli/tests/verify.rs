@@ -302,6 +302,10 @@ fn external_programs_are_verified_with_a_certificate() {
         vec!["--expect", "no-such-scrambler"],
         vec!["--expect", "art-owen-16p"],
         vec!["--timeout", "NaN"],
+        // Once a panic (an Instant overflow) and a child left running; now refused.
+        vec!["--timeout", "1e19"],
+        vec!["--timeout", "1e20"],
+        vec!["--timeout", "86401"],
     ] {
         let mut all = vec!["verify", "--external", good.as_str()];
         all.extend(args.iter().copied());

@@ -512,7 +512,11 @@ impl ExternalProcess {
             .write_all(&frame)
             .and_then(|_| s.stdin.as_mut().expect("open").flush());
         let need = 8 + words.len() * self.width.bits() as usize / 8;
-        let deadline = Instant::now() + self.timeout;
+        // A timeout past what Instant can represent waits "forever" instead of panicking.
+        let now = Instant::now();
+        let deadline = now
+            .checked_add(self.timeout)
+            .unwrap_or_else(|| now + Duration::from_secs(365 * 86_400));
         if let Err(e) = write {
             return Err(
                 self.exited_or(s, batch, need, |stderr| ExternalError::WriteFailed {

@@ -31,8 +31,11 @@ pub fn parse_claim(text: &Option<String>) -> Result<Option<Claim>, CliError> {
         .transpose()
 }
 
+/// The longest `--timeout` accepted: one day per reply.
+pub const MAX_TIMEOUT_SECONDS: f64 = 86_400.0;
+
 /// Starts an external program speaking the protocol, after checking the width (32 or 64 bits)
-/// and `--timeout` (finite, positive seconds).
+/// and `--timeout` (finite, positive seconds, at most [`MAX_TIMEOUT_SECONDS`]).
 pub fn spawn_external(
     command: &str,
     base: PowerOfTwoBase,
@@ -48,6 +51,11 @@ pub fn spawn_external(
     if !(timeout.is_finite() && timeout > 0.0) {
         return Err(CliError::Usage(format!(
             "--timeout {timeout} is not a positive number of seconds"
+        )));
+    }
+    if timeout > MAX_TIMEOUT_SECONDS {
+        return Err(CliError::Usage(format!(
+            "--timeout {timeout} exceeds the maximum of {MAX_TIMEOUT_SECONDS} seconds (one day)"
         )));
     }
     ExternalProcess::spawn(
