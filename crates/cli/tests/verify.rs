@@ -414,3 +414,79 @@ fn a_program_that_starts_and_fails_exits_3_with_its_certificate_written() {
     ]);
     assert_eq!(o.status.code(), Some(3));
 }
+
+/// A merge refuses what is not one complete run: the last shard missing (it once merged 25 of
+/// 26 with exit 0), a shard from another run or tool version, a shard with a check removed
+/// (once a panic, exit 101). Every refusal is exit 2 with the file named.
+#[test]
+fn merge_refuses_incomplete_or_mixed_shards() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = |n: &str| dir.path().join(n).to_str().unwrap().to_string();
+    let run = |shard: &str, out: &str, extra: &[&str]| {
+        let mut args = vec![
+            "verify",
+            "--impl",
+            "lk-hash",
+            "--impl",
+            "digital-shift",
+            "--shard",
+            shard,
+            "--json",
+        ];
+        let p = path(out);
+        args.push(&p);
+        args.extend_from_slice(extra);
+        let o = gartowen(&args);
+        assert!(o.status.code() == Some(0) || o.status.code() == Some(1));
+    };
+    run("1/2", "a1.json", &[]);
+    run("2/2", "a2.json", &[]);
+    run("2/2", "owen2.json", &["--claim", "owen"]);
+    let merge = |files: &[String]| {
+        let mut args = vec!["verify".to_string(), "--merge".to_string()];
+        args.extend(files.iter().cloned());
+        let refs: Vec<&str> = args.iter().map(String::as_str).collect();
+        gartowen(&refs)
+    };
+    let ok = merge(&[path("a2.json"), path("a1.json")]);
+    assert!(ok.status.code() == Some(0) || ok.status.code() == Some(1));
+    // The tail shard alone is missing: no gap in the indexes shows it, the record does.
+    let o = merge(&[path("a1.json")]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("shard 2/2 is missing"));
+    // Another run's shard (another claim) does not mix in.
+    let o = merge(&[path("a1.json"), path("owen2.json")]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("owen2.json") && err.contains("claim_override"),
+        "{err}"
+    );
+    // Tampered shards: another tool version, no shard record, a check removed.
+    let text = std::fs::read_to_string(path("a2.json")).unwrap();
+    let mut doc: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let mut edited = doc.clone();
+    edited["tool_version"] = "0.0.9".into();
+    std::fs::write(path("old.json"), edited.to_string()).unwrap();
+    let mut edited = doc.clone();
+    edited["parameters"]
+        .as_object_mut()
+        .unwrap()
+        .remove("shard");
+    std::fs::write(path("bare.json"), edited.to_string()).unwrap();
+    doc["result"]["implementations"][0]["checks"]
+        .as_array_mut()
+        .unwrap()
+        .remove(1);
+    std::fs::write(path("cut.json"), doc.to_string()).unwrap();
+    for (file, fragment) in [
+        ("old.json", "made by gartowen 0.0.9"),
+        ("bare.json", "no shard record"),
+        ("cut.json", "has checks"),
+    ] {
+        let o = merge(&[path("a1.json"), path(file)]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{file}: {err}");
+        assert!(err.contains(fragment), "{file}: {err}");
+    }
+}

@@ -341,8 +341,10 @@ impl Shard {
     }
 }
 
-/// Merges shard reports into one list in implementation order; errors on a duplicate or a gap.
-pub fn merge(parts: Vec<Vec<ImplReport>>) -> Result<Vec<ImplReport>, String> {
+/// Merges shard reports into one list in implementation order: exactly `total`
+/// implementations, each once, every one with the same checks in the same order. Errors name
+/// the duplicate, the missing implementation or the odd check list.
+pub fn merge(parts: Vec<Vec<ImplReport>>, total: usize) -> Result<Vec<ImplReport>, String> {
     let mut all: Vec<ImplReport> = parts.into_iter().flatten().collect();
     all.sort_by_key(|r| r.index);
     if let Some(w) = all.windows(2).find(|w| w[0].index == w[1].index) {
@@ -356,6 +358,26 @@ pub fn merge(parts: Vec<Vec<ImplReport>>) -> Result<Vec<ImplReport>, String> {
             "implementation {k} is missing (next present: {} at {})",
             r.name, r.index
         ));
+    }
+    if all.len() != total {
+        return Err(format!(
+            "{} of {total} implementations present: {} to {} are missing",
+            all.len(),
+            all.len(),
+            total.saturating_sub(1)
+        ));
+    }
+    let names = |r: &ImplReport| r.checks.iter().map(|c| c.check.clone()).collect::<Vec<_>>();
+    if let Some(first) = all.first() {
+        let want = names(first);
+        if let Some(r) = all.iter().find(|r| names(r) != want) {
+            return Err(format!(
+                "implementation {} ({}) has checks {:?}, the others {want:?}",
+                r.index,
+                r.name,
+                names(r)
+            ));
+        }
     }
     Ok(all)
 }

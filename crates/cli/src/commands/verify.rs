@@ -112,44 +112,109 @@ fn level_name(level: Level) -> &'static str {
     }
 }
 
-/// Reads shard certificates and merges them; all must come from the same level.
-fn merged(paths: &[PathBuf]) -> Result<(Level, Vec<ImplReport>), CliError> {
-    let mut level = None;
+/// What every shard of one run must share (and the merged certificate records).
+const SHARED_PARAMETERS: [&str; 5] = [
+    "level",
+    "node_law_seeds",
+    "family_alpha",
+    "claim_override",
+    "implementations_total",
+];
+
+/// Reads shard certificates and merges them: the shards 1..N of one run, each exactly once,
+/// from the same tool version with the same parameters; anything else is refused with the
+/// file named.
+fn merged(paths: &[PathBuf]) -> Result<(Level, Vec<ImplReport>, Option<String>), CliError> {
+    let mut first: Option<(PathBuf, Certificate)> = None;
+    let mut seen: Vec<usize> = Vec::new();
+    let mut count = 0;
     let mut parts = Vec::new();
+    let usage = |p: &PathBuf, m: String| CliError::Usage(format!("{}: {m}", p.display()));
     for p in paths {
         let text = std::fs::read_to_string(p)
             .map_err(|e| CliError::Io(format!("cannot read {}: {e}", p.display())))?;
-        let cert = Certificate::parse(&text)
-            .map_err(|e| CliError::Usage(format!("{}: {e}", p.display())))?;
+        let cert = Certificate::parse(&text).map_err(|e| usage(p, e.to_string()))?;
         if cert.command != "verify" {
-            return Err(CliError::Usage(format!(
-                "{} is a '{}' certificate, not a verify report",
-                p.display(),
-                cert.command
-            )));
+            return Err(usage(
+                p,
+                format!("a '{}' certificate, not a verify report", cert.command),
+            ));
         }
-        let l: Level = serde_json::from_value(cert.parameters["level"].clone())
-            .map_err(|e| CliError::Usage(format!("{}: bad level: {e}", p.display())))?;
-        if level.is_some_and(|x| x != l) {
-            return Err(CliError::Usage(format!(
-                "{} was run at another level",
-                p.display()
-            )));
+        if cert.inputs.iter().any(|i| i.kind != "registry") {
+            return Err(usage(
+                p,
+                "verifies an external program; only registry shards merge".into(),
+            ));
         }
-        level = Some(l);
+        let shard = &cert.parameters["shard"];
+        let (Some(index), Some(n)) = (shard["index"].as_u64(), shard["count"].as_u64()) else {
+            return Err(usage(
+                p,
+                "no shard record (parameters.shard): not written by `verify --shard --json`".into(),
+            ));
+        };
+        if let Some((fp, f)) = &first {
+            if f.tool_version != cert.tool_version {
+                return Err(usage(
+                    p,
+                    format!(
+                        "made by gartowen {}, {} by {}",
+                        cert.tool_version,
+                        fp.display(),
+                        f.tool_version
+                    ),
+                ));
+            }
+            if n as usize != count {
+                return Err(usage(
+                    p,
+                    format!("is shard {index}/{n}, {} one of {count}", fp.display()),
+                ));
+            }
+            for key in SHARED_PARAMETERS {
+                if f.parameters[key] != cert.parameters[key] {
+                    return Err(usage(
+                        p,
+                        format!(
+                            "{key} = {}, but {} = {} in {}",
+                            cert.parameters[key],
+                            key,
+                            f.parameters[key],
+                            fp.display()
+                        ),
+                    ));
+                }
+            }
+        } else {
+            count = n as usize;
+        }
+        if seen.contains(&(index as usize)) {
+            return Err(usage(p, format!("shard {index}/{n} is given twice")));
+        }
+        seen.push(index as usize);
         let reports: Vec<ImplReport> =
             serde_json::from_value(cert.result["implementations"].clone())
-                .map_err(|e| CliError::Usage(format!("{}: bad report: {e}", p.display())))?;
-        if cert.inputs.iter().any(|i| i.kind != "registry") {
-            return Err(CliError::Usage(format!(
-                "{} verifies an external program; only registry shards merge",
-                p.display()
-            )));
-        }
+                .map_err(|e| usage(p, format!("bad report: {e}")))?;
         parts.push(reports);
+        if first.is_none() {
+            first = Some((p.clone(), cert));
+        }
     }
-    let all = merge(parts).map_err(CliError::Usage)?;
-    Ok((level.expect("at least one file"), all))
+    let (fp, f) = first.expect("at least one file");
+    if let Some(missing) = (1..=count).find(|i| !seen.contains(i)) {
+        return Err(CliError::Usage(format!(
+            "shard {missing}/{count} is missing ({} of {count} given)",
+            seen.len()
+        )));
+    }
+    let level: Level = serde_json::from_value(f.parameters["level"].clone())
+        .map_err(|e| usage(&fp, format!("bad level: {e}")))?;
+    let total = f.parameters["implementations_total"]
+        .as_u64()
+        .ok_or_else(|| usage(&fp, "no implementations_total".into()))? as usize;
+    let all = merge(parts, total).map_err(CliError::Usage)?;
+    let claim = f.parameters["claim_override"].as_str().map(str::to_string);
+    Ok((level, all, claim))
 }
 
 /// The certificate's records of registry implementations, in report order.
@@ -245,8 +310,13 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
         LevelArg::Exhaustive => Level::Exhaustive,
     };
     let mut external_failure = None;
+    let mut claim_override = a.claim.clone();
+    let mut shard_record = Shard::ALL;
+    let mut total = 1;
     let (level, reports, inputs) = if !a.merge.is_empty() {
-        let (level, reports) = merged(&a.merge)?;
+        let (level, reports, claim) = merged(&a.merge)?;
+        claim_override = claim;
+        total = reports.len();
         let inputs = registry_inputs(&reports);
         (level, reports, inputs)
     } else if let Some(command) = &a.external {
@@ -261,11 +331,12 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
             })?,
         };
         let registry = gartowen::registry();
-        let total = if a.implementations.is_empty() {
+        total = if a.implementations.is_empty() {
             registry.specs().len()
         } else {
             a.implementations.len()
         };
+        shard_record = shard;
         let bar = indicatif::ProgressBar::new(total.div_ceil(shard.count) as u64);
         bar.set_style(
             indicatif::ProgressStyle::with_template("verify {msg} [{bar:30}] {pos}/{len}")
@@ -304,7 +375,10 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
             "level": level,
             "node_law_seeds": gartowen::verify::node_law_seeds(level),
             "family_alpha": gartowen::verify::stats::FAMILY_ALPHA,
-            "claim_override": a.claim,
+            "claim_override": claim_override,
+            // What a merge needs to refuse an incomplete or mixed set of shards.
+            "shard": { "index": shard_record.index, "count": shard_record.count },
+            "implementations_total": total,
         });
         if let Some(command) = &a.external {
             parameters["external"] = serde_json::json!({
