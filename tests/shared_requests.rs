@@ -1,10 +1,8 @@
-//! The request and report code the CLI and the Python package share: the generate plan, the
-//! net-check report, the discrepancy method choice. Each is checked against an independent
+//! The request and report code the CLI and the Python package share: the generate plan and
+//! the net-check report (the discrepancy method choice is tested in its crate). Each is checked against an independent
 //! path (the sequence and scrambler called directly, brute-force box counts, the exact method).
 
 use gartowen::core::{BuildContext, PowerOfTwoBase, Width};
-use gartowen::discrepancy::choice::{compute, MethodChoice};
-use gartowen::discrepancy::{Kind, Method, Points};
 use gartowen::generate::{
     width_from_bits, GeneratePlan, GenerateRequest, PointCount, PointOrder, RequestError,
 };
@@ -304,79 +302,4 @@ fn describe_failure_names_only_refined_dimensions() {
         expected: 4,
     };
     assert!(describe_failure(&whole, 2).contains("[0,1)^s"));
-}
-
-#[test]
-fn method_choice_auto_picks_what_it_can_prove() {
-    let words: Vec<u64> = sobol_set(48, 3)
-        .point(0)
-        .into_iter()
-        .chain((1..48).flat_map(|i| sobol_set(48, 3).point(i)))
-        .collect();
-    let p3 = Points {
-        words: &words,
-        dims: 3,
-        width: Width::W32,
-    };
-    for kind in Kind::ALL {
-        let exact = compute(p3, kind, MethodChoice::Exact).unwrap();
-        assert_eq!(exact.method, Method::Exact);
-        let auto = compute(p3, kind, MethodChoice::Auto).unwrap();
-        assert_eq!(auto.method, Method::Compensated, "{kind:?}");
-        assert!(auto.rel_error_bound.unwrap() <= 1e-12);
-        assert!((auto.value - exact.value).abs() <= 1e-12 * exact.value);
-        assert_eq!(
-            compute(p3, kind, MethodChoice::Naive).unwrap().method,
-            Method::Naive
-        );
-        assert_eq!(
-            compute(p3, kind, MethodChoice::Compensated).unwrap().method,
-            Method::Compensated
-        );
-        assert!(compute(p3, kind, MethodChoice::Fast).is_err());
-    }
-    let two: Vec<u64> = (0..48).flat_map(|i| sobol_set(48, 2).point(i)).collect();
-    let p2 = Points {
-        words: &two,
-        dims: 2,
-        width: Width::W32,
-    };
-    assert_eq!(
-        compute(p2, Kind::L2Star, MethodChoice::Auto)
-            .unwrap()
-            .method,
-        Method::Fast
-    );
-    assert_eq!(
-        compute(p2, Kind::Centered, MethodChoice::Auto)
-            .unwrap()
-            .method,
-        Method::Compensated
-    );
-    // Where the compensated bound exceeds 1e-12 (8-D, 512 points, CD: about 2e-11), auto
-    // falls back to the exact method; elsewhere it keeps the compensated value.
-    let set = sobol_set(512, 8);
-    let eight: Vec<u64> = (0..512).flat_map(|i| set.point(i)).collect();
-    let p8 = Points {
-        words: &eight,
-        dims: 8,
-        width: Width::W32,
-    };
-    let mut fell_back = 0;
-    for kind in Kind::ALL {
-        let c = compute(p8, kind, MethodChoice::Compensated).unwrap();
-        let auto = compute(p8, kind, MethodChoice::Auto).unwrap();
-        if c.rel_error_bound.unwrap() > 1e-12 {
-            fell_back += 1;
-            assert_eq!(auto.method, Method::Exact, "{kind:?}");
-        } else {
-            assert_eq!(auto.method, Method::Compensated, "{kind:?}");
-            assert_eq!(auto.value, c.value);
-        }
-    }
-    assert!(fell_back > 0, "no kind exercised the fallback");
-    for name in ["auto", "naive", "compensated", "exact", "fast"] {
-        assert_eq!(MethodChoice::parse(name).unwrap().name(), name);
-    }
-    assert_eq!(MethodChoice::parse("Auto"), None);
 }
