@@ -530,7 +530,16 @@ pub fn read_baseline(path: &Path) -> Result<Report, ReportError> {
             path.display()
         )));
     }
-    serde_json::from_value(v).map_err(|e| ReportError::Baseline(format!("{}: {e}", path.display())))
+    let report: Report = serde_json::from_value(v)
+        .map_err(|e| ReportError::Baseline(format!("{}: {e}", path.display())))?;
+    // A baseline that compares nothing would pass every run: refuse it.
+    if report.methods.iter().all(|m| m.curves.is_empty()) && report.speed.is_empty() {
+        return Err(ReportError::Baseline(format!(
+            "{}: no error curves and no speed rows: nothing to compare",
+            path.display()
+        )));
+    }
+    Ok(report)
 }
 
 /// The methods each RMSE figure shows (to keep the legend readable).

@@ -62,6 +62,21 @@ fn quick_report_writes_figures_and_the_baseline_gate_works() {
         }
     }
     std::fs::write(path("better.json"), v.to_string()).unwrap();
+    // A baseline with empty lists compares nothing: refused (it once passed every run).
+    let mut empty = v.clone();
+    empty["methods"] = serde_json::json!([]);
+    empty["speed"] = serde_json::json!([]);
+    std::fs::write(path("empty.json"), empty.to_string()).unwrap();
+    let o = gartowen(&[
+        "report",
+        "--quick",
+        "--out",
+        &path("e"),
+        "--baseline",
+        &path("empty.json"),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("nothing to compare"));
     let o = gartowen(&[
         "report",
         "--quick",
