@@ -1,5 +1,10 @@
 //! Output files written atomically: into a temporary file beside the target, renamed on
 //! success and removed on failure, so an error never leaves a partial or clobbered file.
+//!
+//! The target is respected: a regular file keeps its permissions, and a read-only one is
+//! refused; a device, FIFO or socket (`/dev/null`, a named pipe) is written in place, never
+//! replaced; a symbolic link is refused (name its target instead), so `-o` never redirects
+//! a write through a link or turns a special file into a regular one.
 
 use crate::CliError;
 use std::fs::File;
@@ -10,6 +15,11 @@ use std::path::{Path, PathBuf};
 pub enum Sink {
     File {
         tmp: PathBuf,
+        target: PathBuf,
+        writer: BufWriter<File>,
+    },
+    /// A special file (device, FIFO, socket) written in place.
+    InPlace {
         target: PathBuf,
         writer: BufWriter<File>,
     },
@@ -26,12 +36,62 @@ impl Sink {
                 let name = p.file_name().ok_or_else(|| {
                     CliError::Usage(format!("{} is not a file path", p.display()))
                 })?;
+                let existing = match std::fs::symlink_metadata(p) {
+                    Ok(m) => Some(m),
+                    Err(e) if e.kind() == io::ErrorKind::NotFound => None,
+                    Err(e) => {
+                        return Err(CliError::Io(format!("cannot inspect {}: {e}", p.display())))
+                    }
+                };
+                if let Some(m) = &existing {
+                    let kind = m.file_type();
+                    if kind.is_symlink() {
+                        return Err(CliError::Usage(format!(
+                            "{} is a symbolic link: gartowen does not write through links; \
+                             give the file it points to",
+                            p.display()
+                        )));
+                    }
+                    if kind.is_dir() {
+                        return Err(CliError::Usage(format!("{} is a directory", p.display())));
+                    }
+                    if !kind.is_file() {
+                        // A device, FIFO or socket: write into it, never replace it.
+                        let file =
+                            std::fs::OpenOptions::new()
+                                .write(true)
+                                .open(p)
+                                .map_err(|e| {
+                                    CliError::Io(format!("cannot open {}: {e}", p.display()))
+                                })?;
+                        return Ok(Sink::InPlace {
+                            target: p.to_path_buf(),
+                            writer: BufWriter::new(file),
+                        });
+                    }
+                    if m.permissions().readonly() {
+                        return Err(CliError::Usage(format!(
+                            "{} is read-only: gartowen does not replace it",
+                            p.display()
+                        )));
+                    }
+                }
                 let mut tmp_name = std::ffi::OsString::from(".");
                 tmp_name.push(name);
                 tmp_name.push(format!(".tmp-{}", std::process::id()));
                 let tmp = p.with_file_name(tmp_name);
-                let file = File::create(&tmp)
+                let file = std::fs::OpenOptions::new()
+                    .write(true)
+                    .create_new(true)
+                    .open(&tmp)
                     .map_err(|e| CliError::Io(format!("cannot create {}: {e}", p.display())))?;
+                if let Some(m) = &existing {
+                    // The replacement keeps the target's permissions (a 0600 file stays 0600).
+                    file.set_permissions(m.permissions()).map_err(|e| {
+                        let _ = std::fs::remove_file(&tmp);
+                        CliError::Io(format!("cannot keep the mode of {}: {e}", p.display()))
+                    })?;
+                }
                 Ok(Sink::File {
                     tmp,
                     target: p.to_path_buf(),
@@ -44,7 +104,7 @@ impl Sink {
     /// The writer to write into.
     pub fn writer(&mut self) -> &mut dyn Write {
         match self {
-            Sink::File { writer, .. } => writer,
+            Sink::File { writer, .. } | Sink::InPlace { writer, .. } => writer,
             Sink::Stdout(w) => w,
         }
     }
@@ -55,6 +115,9 @@ impl Sink {
             Sink::Stdout(mut w) => w
                 .flush()
                 .map_err(|e| CliError::Io(format!("cannot write to standard output: {e}"))),
+            Sink::InPlace { target, mut writer } => writer
+                .flush()
+                .map_err(|e| CliError::Io(format!("cannot write {}: {e}", target.display()))),
             Sink::File {
                 tmp,
                 target,

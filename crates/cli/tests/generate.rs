@@ -190,3 +190,81 @@ fn help_explains_the_conventions() {
     assert!(text.contains("--log2-n") && text.contains("scipy"));
     assert!(Path::new(env!("CARGO_BIN_EXE_gartowen")).exists());
 }
+
+/// `-o` respects what is there: a symlink or a read-only file is refused (exit 2, untouched),
+/// a 0600 file keeps its mode, a FIFO and /dev/null are written in place, never replaced.
+#[test]
+fn output_targets_are_respected() {
+    use std::os::unix::fs::{FileTypeExt, PermissionsExt};
+    let dir = tempfile::tempdir().unwrap();
+    let path = |n: &str| dir.path().join(n);
+    let gen = |out: &std::path::Path| {
+        gartowen(&[
+            "generate",
+            "--seq",
+            "sobol",
+            "--dims",
+            "2",
+            "--n",
+            "16",
+            "-o",
+            out.to_str().unwrap(),
+        ])
+    };
+    // A symlink: refused, and neither the link nor its target changes.
+    std::fs::write(path("real.hex"), "keep\n").unwrap();
+    std::os::unix::fs::symlink(path("real.hex"), path("link.hex")).unwrap();
+    let o = gen(&path("link.hex"));
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("symbolic link"));
+    assert!(std::fs::symlink_metadata(path("link.hex"))
+        .unwrap()
+        .file_type()
+        .is_symlink());
+    assert_eq!(std::fs::read_to_string(path("real.hex")).unwrap(), "keep\n");
+    // Read-only: refused and untouched.
+    std::fs::write(path("ro.hex"), "keep\n").unwrap();
+    std::fs::set_permissions(path("ro.hex"), std::fs::Permissions::from_mode(0o444)).unwrap();
+    let o = gen(&path("ro.hex"));
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("read-only"));
+    assert_eq!(std::fs::read_to_string(path("ro.hex")).unwrap(), "keep\n");
+    // A private file stays private.
+    std::fs::write(path("private.hex"), "old\n").unwrap();
+    std::fs::set_permissions(path("private.hex"), std::fs::Permissions::from_mode(0o600)).unwrap();
+    assert!(gen(&path("private.hex")).status.success());
+    let m = std::fs::metadata(path("private.hex")).unwrap();
+    assert_eq!(m.permissions().mode() & 0o777, 0o600);
+    assert_eq!(
+        std::fs::read_to_string(path("private.hex"))
+            .unwrap()
+            .lines()
+            .count(),
+        16
+    );
+    // /dev/null is written into and stays a character device.
+    assert!(gen(std::path::Path::new("/dev/null")).status.success());
+    assert!(std::fs::metadata("/dev/null")
+        .unwrap()
+        .file_type()
+        .is_char_device());
+    // A FIFO: the reader gets the points, the FIFO stays a FIFO.
+    let fifo = path("pipe.hex");
+    assert!(Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .unwrap()
+        .success());
+    let reader = {
+        let fifo = fifo.clone();
+        std::thread::spawn(move || std::fs::read_to_string(fifo).unwrap())
+    };
+    assert!(gen(&fifo).status.success());
+    assert_eq!(reader.join().unwrap().lines().count(), 16);
+    assert!(std::fs::symlink_metadata(&fifo)
+        .unwrap()
+        .file_type()
+        .is_fifo());
+    // A directory is refused.
+    assert_eq!(gen(dir.path()).status.code(), Some(2));
+}
