@@ -74,7 +74,7 @@ impl<'a> Points<'a> {
     /// ```
     /// use gartowen_core::Width;
     /// use gartowen_discrepancy::Points;
-    /// let p = |w: &[u64]| Points { words: w, dims: 1, width: Width::W64 };
+    /// fn p(w: &[u64]) -> Points<'_> { Points { words: w, dims: 1, width: Width::W64 } }
     /// assert!(p(&[1 << 14, 0]).exact_in_f64());
     /// assert!(!p(&[(1 << 14) | (1 << 12)]).exact_in_f64());
     /// ```
