@@ -11,6 +11,10 @@ use gartowen_core::{
 /// Default alphabet size (L = 81).
 pub const DEFAULT_SYMBOLS: usize = 256;
 
+/// The largest `:table=N` accepted (tables of N × 2^q entries; 2^16 symbols in base 256 is
+/// 16 M entries).
+pub const MAX_TABLE_SYMBOLS: usize = 1 << 16;
+
 /// The variant a registry name stands for.
 pub fn variant_of(name: &str) -> Option<ArtVariant> {
     let q_of = |rest: &str| rest.parse::<u32>().ok().filter(|q| (1..=8).contains(q));
@@ -42,6 +46,15 @@ fn build_art(req: &ScramblerRequest, ctx: &BuildContext) -> Result<Box<dyn Scram
             reason: format!("'{t}' is not a number of symbols"),
         })?,
     };
+    if symbols > MAX_TABLE_SYMBOLS {
+        // The grammar's length grows linearly with the symbols and its tables with
+        // symbols × base: refuse before building (2^32 symbols once hung for minutes).
+        return Err(CoreError::InvalidOption {
+            scrambler: req.name.clone(),
+            option: "table".into(),
+            reason: format!("{symbols} symbols: at most {MAX_TABLE_SYMBOLS}"),
+        });
+    }
     ArtOwen::new(variant, symbols, ctx.seed)
         .map(|s| Box::new(s) as Box<dyn Scrambler>)
         .map_err(|e| CoreError::InvalidOption {

@@ -25,6 +25,42 @@ pub fn file_record(path: &Path, points: &PointSet) -> gartowen::certificate::Inp
     gartowen::reports::point_set_record("file", &path.display().to_string(), points)
 }
 
+/// The largest point file read (2 GiB): the parsed points take at least as much again, and a
+/// stream such as /dev/zero would otherwise be read until memory runs out.
+pub const MAX_INPUT_BYTES: u64 = 2 << 30;
+
+/// The file's bytes, refused (exit 2) past [`MAX_INPUT_BYTES`]: by its size when it is a
+/// regular file, before reading; by reading at most one byte more for streams.
+fn read_bounded(path: &Path) -> Result<Vec<u8>, CliError> {
+    use std::io::Read;
+    let cannot = |e: std::io::Error| CliError::Io(format!("cannot read {}: {e}", path.display()));
+    let too_big = || {
+        CliError::Usage(format!(
+            "{}: larger than {MAX_INPUT_BYTES} bytes, the most gartowen reads",
+            path.display()
+        ))
+    };
+    let file = std::fs::File::open(path).map_err(cannot)?;
+    let meta = file.metadata().map_err(cannot)?;
+    if meta.is_dir() {
+        return Err(CliError::Usage(format!(
+            "{} is a directory",
+            path.display()
+        )));
+    }
+    if meta.is_file() && meta.len() > MAX_INPUT_BYTES {
+        return Err(too_big());
+    }
+    let mut bytes = Vec::new();
+    file.take(MAX_INPUT_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(cannot)?;
+    if bytes.len() as u64 > MAX_INPUT_BYTES {
+        return Err(too_big());
+    }
+    Ok(bytes)
+}
+
 fn bad(path: &Path, msg: impl std::fmt::Display) -> CliError {
     CliError::Usage(format!("{}: {msg}", path.display()))
 }
@@ -45,8 +81,7 @@ pub fn read_points(path: &Path, format: InputFormat) -> Result<PointSet, CliErro
         },
         f => f,
     };
-    let bytes = std::fs::read(path)
-        .map_err(|e| CliError::Io(format!("cannot read {}: {e}", path.display())))?;
+    let bytes = read_bounded(path)?;
     match format {
         InputFormat::Npy => read_npy(path, &bytes),
         InputFormat::Csv => read_csv(path, &bytes),

