@@ -1,5 +1,6 @@
 //! The `gartowen` command-line tool.
 
+mod cleanup;
 mod commands;
 mod error;
 mod input;
@@ -35,6 +36,7 @@ enum Command {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    cleanup::install();
     let result = match cli.command {
         Command::Generate(a) => commands::generate::run(a),
         Command::Scramble(a) => commands::scramble::run(a),

@@ -80,15 +80,21 @@ impl Sink {
                 tmp_name.push(name);
                 tmp_name.push(format!(".tmp-{}", std::process::id()));
                 let tmp = p.with_file_name(tmp_name);
+                // Registered before it exists, so no signal can fall between the two.
+                crate::cleanup::register(&tmp);
                 let file = std::fs::OpenOptions::new()
                     .write(true)
                     .create_new(true)
                     .open(&tmp)
-                    .map_err(|e| CliError::Io(format!("cannot create {}: {e}", p.display())))?;
+                    .map_err(|e| {
+                        crate::cleanup::unregister(&tmp);
+                        CliError::Io(format!("cannot create {}: {e}", p.display()))
+                    })?;
                 if let Some(m) = &existing {
                     // The replacement keeps the target's permissions (a 0600 file stays 0600).
                     file.set_permissions(m.permissions()).map_err(|e| {
                         let _ = std::fs::remove_file(&tmp);
+                        crate::cleanup::unregister(&tmp);
                         CliError::Io(format!("cannot keep the mode of {}: {e}", p.display()))
                     })?;
                 }
@@ -128,6 +134,7 @@ impl Sink {
                     .map_err(|e| e.into_error())
                     .and_then(|f| f.sync_all())
                     .and_then(|_| std::fs::rename(&tmp, &target));
+                crate::cleanup::unregister(&tmp);
                 if let Err(e) = result {
                     let _ = std::fs::remove_file(&tmp);
                     return Err(CliError::Io(format!(
@@ -144,7 +151,8 @@ impl Sink {
     pub fn abort(self) {
         if let Sink::File { tmp, writer, .. } = self {
             drop(writer);
-            let _ = std::fs::remove_file(tmp);
+            let _ = std::fs::remove_file(&tmp);
+            crate::cleanup::unregister(&tmp);
         }
     }
 }

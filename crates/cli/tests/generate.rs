@@ -268,3 +268,53 @@ fn output_targets_are_respected() {
     // A directory is refused.
     assert_eq!(gen(dir.path()).status.code(), Some(2));
 }
+
+/// SIGTERM, SIGINT or SIGHUP during a long `generate -o` removes the temporary file (it once
+/// left 600–730 MB behind) and leaves no target; the process ends by the signal.
+#[test]
+fn a_signal_removes_the_temporary_output() {
+    use std::os::unix::process::ExitStatusExt;
+    for signal in ["TERM", "INT", "HUP"] {
+        let dir = tempfile::tempdir().unwrap();
+        let target = dir.path().join("big.npy");
+        let mut child = Command::new(env!("CARGO_BIN_EXE_gartowen"))
+            .args([
+                "generate", "--seq", "sobol", "--dims", "64", "--log2-n", "22",
+            ])
+            .args(["--scramble", "owen-per-bit-hash", "--format", "npy", "-o"])
+            .arg(&target)
+            .spawn()
+            .unwrap();
+        // Wait until the temporary file exists and has data.
+        let started = std::time::Instant::now();
+        let tmp = loop {
+            let found = std::fs::read_dir(dir.path())
+                .unwrap()
+                .filter_map(|e| e.ok())
+                .find(|e| e.file_name().to_string_lossy().contains(".tmp-"));
+            if let Some(e) = found {
+                if e.metadata().map(|m| m.len() > 0).unwrap_or(false) {
+                    break e.path();
+                }
+            }
+            assert!(
+                started.elapsed().as_secs() < 60,
+                "no temporary file appeared"
+            );
+            std::thread::sleep(std::time::Duration::from_millis(20));
+        };
+        let kill = Command::new("kill")
+            .args([format!("-{signal}"), child.id().to_string()])
+            .status()
+            .unwrap();
+        assert!(kill.success());
+        let status = child.wait().unwrap();
+        assert!(!status.success(), "{signal}: {status:?}");
+        assert!(
+            status.signal().is_some() || status.code().is_some_and(|c| c > 128),
+            "{signal}: {status:?}"
+        );
+        assert!(!tmp.exists(), "{signal}: {} left behind", tmp.display());
+        assert!(!target.exists(), "{signal}: a partial target");
+    }
+}
