@@ -3,7 +3,8 @@
 //!
 //! Output sinks register their temporary file while it is being written and unregister it
 //! once it is renamed or removed. A watcher thread waits for the signals; on the first one it
-//! removes every registered file and ends the process as the signal would have.
+//! removes every registered file, kills the process groups of external programs still
+//! running (their helpers included), and ends the process as the signal would have.
 
 use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
 use signal_hook::iterator::Signals;
@@ -28,8 +29,10 @@ pub fn install() {
     });
 }
 
-/// Removes every registered file (the signal path).
+/// Removes every registered file and kills every external program's process group (the
+/// signal path).
 fn remove_pending() {
+    gartowen::external::kill_live_groups();
     let mut pending = PENDING.lock().unwrap_or_else(|e| e.into_inner());
     for path in pending.drain(..) {
         let _ = std::fs::remove_file(path);

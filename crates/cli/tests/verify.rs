@@ -490,3 +490,58 @@ fn merge_refuses_incomplete_or_mixed_shards() {
         assert!(err.contains(fragment), "{file}: {err}");
     }
 }
+
+/// SIGTERM to `verify --external` ends the program's whole process group: a helper the
+/// program started (here a `sleep`) does not outlive verify (it once kept running).
+#[test]
+fn a_signal_to_verify_ends_the_external_programs_helpers() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = tempfile::tempdir().unwrap();
+    let pidfile = dir.path().join("helper.pid");
+    let script = dir.path().join("hang.sh");
+    std::fs::write(
+        &script,
+        format!(
+            "#!/bin/sh\nsleep 300 &\necho $! > {}\nwait\n",
+            pidfile.display()
+        ),
+    )
+    .unwrap();
+    std::fs::set_permissions(&script, std::fs::Permissions::from_mode(0o755)).unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_gartowen"))
+        .args(["verify", "--external"])
+        .arg(&script)
+        .args(["--timeout", "120"])
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let started = std::time::Instant::now();
+    let helper = loop {
+        if let Ok(text) = std::fs::read_to_string(&pidfile) {
+            if let Ok(pid) = text.trim().parse::<u32>() {
+                break pid;
+            }
+        }
+        assert!(started.elapsed().as_secs() < 30, "the helper never started");
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    };
+    let alive = |pid: u32| {
+        // Gone, or a zombie waiting for its reaper, counts as ended.
+        std::fs::read_to_string(format!("/proc/{pid}/stat"))
+            .map(|s| !s.split(") ").nth(1).unwrap_or("").starts_with('Z'))
+            .unwrap_or(false)
+    };
+    assert!(alive(helper));
+    assert!(Command::new("kill")
+        .args(["-TERM", &child.id().to_string()])
+        .status()
+        .unwrap()
+        .success());
+    child.wait().unwrap();
+    let waited = std::time::Instant::now();
+    while alive(helper) && waited.elapsed().as_secs() < 10 {
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    assert!(!alive(helper), "helper {helper} outlived verify");
+}

@@ -355,7 +355,32 @@ pub struct ExternalProcess {
 
 const STDERR_KEEP: usize = 4096;
 
+/// Process groups (leader pids) of the external programs still running, so that a signal
+/// handler can end them: a process killed by a signal runs no `Drop`.
+static LIVE_GROUPS: Mutex<Vec<u32>> = Mutex::new(Vec::new());
+
+/// Kills the process group of every external program still running (with its helpers). Meant
+/// for a signal handler's last act before the process ends.
+pub fn kill_live_groups() {
+    let groups: Vec<u32> = LIVE_GROUPS
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .drain(..)
+        .collect();
+    #[cfg(unix)]
+    for pid in groups {
+        // SAFETY: kill(2) with a valid signal number has no memory-safety preconditions.
+        unsafe {
+            libc::kill(-(pid as i32), libc::SIGKILL);
+        }
+    }
+}
+
 fn kill_group(child: &mut Child) {
+    LIVE_GROUPS
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .retain(|&p| p != child.id());
     #[cfg(unix)]
     {
         // The child leads its own process group; a negative pid signals the whole group, so
@@ -396,6 +421,10 @@ impl ExternalProcess {
             program: words[0].clone(),
             reason: e.to_string(),
         })?;
+        LIVE_GROUPS
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .push(child.id());
         let stdin = child.stdin.take();
         let mut out = child.stdout.take().expect("piped stdout");
         let mut err = child.stderr.take().expect("piped stderr");
@@ -620,7 +649,8 @@ fn describe_status(status: std::process::ExitStatus) -> String {
 
 impl Drop for ExternalProcess {
     fn drop(&mut self) {
-        let s = self.session.get_mut().expect("session");
+        // A poisoned session (a panic elsewhere) must still end the child.
+        let s = self.session.get_mut().unwrap_or_else(|e| e.into_inner());
         // Closing stdin asks a well-behaved child to exit; give it a moment, then kill the group.
         s.stdin = None;
         let start = Instant::now();
