@@ -270,3 +270,37 @@ fn a_lying_npy_header_is_refused() {
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert!(err.contains("header claims 4294967295 bytes"), "{err}");
 }
+
+/// Wide inputs are bounded: 4 points in 2000 dimensions (2 million shapes of 2000 parts, once
+/// 5.7 GB and an abort) are refused at once with the estimate; one point in 200,000 dimensions
+/// (once a stack overflow) is checked.
+#[test]
+fn wide_point_sets_are_refused_by_their_memory_estimate_or_checked() {
+    let dir = tempfile::tempdir().unwrap();
+    let wide = dir.path().join("wide.csv");
+    let rows: Vec<String> = (0..4)
+        .map(|i| {
+            (0..2000)
+                .map(|j| format!("{}", ((i * 7 + j * 3) % 4) as f64 / 4.0))
+                .collect::<Vec<_>>()
+                .join(",")
+        })
+        .collect();
+    std::fs::write(&wide, rows.join("\n") + "\n").unwrap();
+    let o = gartowen(&["check", wide.to_str().unwrap(), "--base", "2"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("shapes of 2000 dimensions need"), "{err}");
+    let deep = dir.path().join("deep.csv");
+    std::fs::write(&deep, vec!["0.5"; 200_000].join(",") + "\n").unwrap();
+    let o = gartowen(&["check", deep.to_str().unwrap(), "--base", "2", "--json"]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let doc: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(doc["result"]["t"], 0);
+    assert_eq!(doc["result"]["s"], 200_000);
+}

@@ -29,6 +29,14 @@ pub enum NetError {
     NoSuchDimension { dim: usize, dims: usize },
     /// Too many shapes to enumerate.
     TooManyShapes { shapes: u128, limit: u128 },
+    /// The shapes would take more memory than [`crate::shapes::SHAPE_BYTES_LIMIT`] (each holds
+    /// one digit count per dimension).
+    ShapesTooLarge {
+        shapes: u128,
+        dims: usize,
+        bytes: u128,
+        limit: u128,
+    },
     /// Generator matrices too large for the rank path (more than 64 columns or rows used).
     TooManyBits { bits: u32 },
     /// A projection list that could not be parsed.
@@ -66,6 +74,16 @@ impl fmt::Display for NetError {
             NetError::NoSuchDimension { dim, dims } => {
                 write!(f, "dimension {dim} does not exist (the set has {dims})")
             }
+            NetError::ShapesTooLarge {
+                shapes,
+                dims,
+                bytes,
+                limit,
+            } => write!(
+                f,
+                "{shapes} shapes of {dims} dimensions need {bytes} bytes, more than {limit}; \
+                 check projections instead"
+            ),
             NetError::TooManyShapes { shapes, limit } => write!(
                 f,
                 "{shapes} shapes to check exceeds the limit {limit}; check projections instead"
