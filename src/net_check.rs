@@ -108,12 +108,11 @@ pub fn check_points(
         ),
         None => None,
     };
-    let targets: Vec<(Vec<usize>, PointSet)> = match &projections {
-        None => vec![((0..points.dims()).collect(), points.clone())],
-        Some(list) => list
-            .iter()
-            .map(|p| Ok((p.clone(), points.project(p).map_err(|e| e.to_string())?)))
-            .collect::<Result<_, String>>()?,
+    // The projections' dimension lists; each projected set is made only when its turn comes,
+    // so memory holds one projection at a time (a million pairs of 2^20 points would not fit).
+    let targets: Vec<Vec<usize>> = match &projections {
+        None => vec![(0..points.dims()).collect()],
+        Some(list) => list.clone(),
     };
     let (holds, mut results, text) = if q.sequence {
         sequences(q, base, points, &targets, progress)?
@@ -138,7 +137,7 @@ fn nets(
     q: &NetQuery,
     base: CheckBase,
     points: &PointSet,
-    targets: &[(Vec<usize>, PointSet)],
+    targets: &[Vec<usize>],
     progress: &dyn Progress,
 ) -> Result<Parts, String> {
     let err = |e: gartowen_netcheck::NetError| e.to_string();
@@ -150,7 +149,14 @@ fn nets(
     let mut holds = true;
     let mut results = Vec::new();
     let mut text = String::new();
-    for (dims, set) in targets {
+    for dims in targets {
+        let owned;
+        let set = if dims.len() == points.dims() && dims.iter().enumerate().all(|(k, &d)| k == d) {
+            points
+        } else {
+            owned = points.project(dims).map_err(err)?;
+            &owned
+        };
         match q.t {
             Some(t) => {
                 let total =
@@ -206,7 +212,7 @@ fn sequences(
     q: &NetQuery,
     base: CheckBase,
     points: &PointSet,
-    targets: &[(Vec<usize>, PointSet)],
+    targets: &[Vec<usize>],
     progress: &dyn Progress,
 ) -> Result<Parts, String> {
     let err = |e: gartowen_netcheck::NetError| e.to_string();
@@ -221,7 +227,14 @@ fn sequences(
     let mut holds = true;
     let mut results = Vec::new();
     let mut text = String::new();
-    for (dims, set) in targets {
+    for dims in targets {
+        let owned;
+        let set = if dims.len() == points.dims() && dims.iter().enumerate().all(|(k, &d)| k == d) {
+            points
+        } else {
+            owned = points.project(dims).map_err(err)?;
+            &owned
+        };
         let (t, r) = match q.t {
             Some(t) => {
                 progress.start(0, "block-shapes");

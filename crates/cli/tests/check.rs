@@ -291,6 +291,18 @@ fn wide_point_sets_are_refused_by_their_memory_estimate_or_checked() {
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(err.contains("shapes of 2000 dimensions need"), "{err}");
+    // All pairs of 2000 dimensions are 1,999,000 projections: refused before expanding.
+    let o = gartowen(&[
+        "check",
+        wide.to_str().unwrap(),
+        "--base",
+        "2",
+        "--projections",
+        "pairs",
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("1999000 projections"), "{err}");
     let deep = dir.path().join("deep.csv");
     std::fs::write(&deep, vec!["0.5"; 200_000].join(",") + "\n").unwrap();
     let o = gartowen(&["check", deep.to_str().unwrap(), "--base", "2", "--json"]);

@@ -3,6 +3,12 @@
 use crate::NetError;
 use std::str::FromStr;
 
+/// The most projections one check expands to.
+pub const MAX_PROJECTIONS: u128 = 1 << 20;
+
+/// The most dimension indices all projections of one check hold together.
+pub const MAX_PROJECTION_ENTRIES: u128 = 1 << 24;
+
 /// A family of coordinate projections.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum ProjectionSpec {
@@ -54,6 +60,26 @@ impl FromStr for ProjectionSpec {
 impl ProjectionSpec {
     /// The projections of an s-dimensional set; errors on dimensions past s or empty lists.
     pub fn expand(&self, s: usize) -> Result<Vec<Vec<usize>>, NetError> {
+        // Count before allocating: `pairs` of 20,000 dimensions is 200 million projections.
+        let (count, entries): (u128, u128) = match self {
+            ProjectionSpec::Pairs => {
+                let n = (s as u128) * (s as u128).saturating_sub(1) / 2;
+                (n, 2 * n)
+            }
+            ProjectionSpec::Groups(g) => {
+                let n = s.saturating_sub(g - 1) as u128;
+                (n, n * *g as u128)
+            }
+            ProjectionSpec::Blocks(g) => ((s / g) as u128, (s / g * g) as u128),
+            ProjectionSpec::List(l) => (l.len() as u128, l.iter().map(|p| p.len() as u128).sum()),
+        };
+        if count > MAX_PROJECTIONS || entries > MAX_PROJECTION_ENTRIES {
+            return Err(NetError::BadProjection(format!(
+                "{self:?} of {s} dimensions gives {count} projections ({entries} dimension \
+                 indices); at most {MAX_PROJECTIONS} projections and {MAX_PROJECTION_ENTRIES} \
+                 indices are checked in one run"
+            )));
+        }
         let out: Vec<Vec<usize>> = match self {
             ProjectionSpec::Pairs => (0..s)
                 .flat_map(|i| (i + 1..s).map(move |j| vec![i, j]))
@@ -80,5 +106,21 @@ impl ProjectionSpec {
             }
         }
         Ok(out)
+    }
+}
+
+#[cfg(test)]
+mod bound_tests {
+    use super::*;
+
+    #[test]
+    fn expansions_are_counted_before_they_are_built() {
+        // 1449 dimensions: 1,049,076 pairs, just past the bound; 1448: 1,047,628, inside.
+        assert!(ProjectionSpec::Pairs.expand(1449).is_err());
+        assert_eq!(ProjectionSpec::Pairs.expand(1448).unwrap().len(), 1_047_628);
+        // Sliding groups bounded by their indices: 8193 windows of 2048 > 2^24.
+        assert!(ProjectionSpec::Groups(2048).expand(10_240).is_err());
+        assert_eq!(ProjectionSpec::Groups(3).expand(10).unwrap().len(), 8);
+        assert_eq!(ProjectionSpec::Blocks(4).expand(10).unwrap().len(), 2);
     }
 }
