@@ -8,6 +8,7 @@ use gartowen_netcheck::counting::{
 };
 use gartowen_netcheck::{BoxFailure, CheckBase, PointSet, ProjectionSpec};
 use serde_json::{json, Value};
+use std::borrow::Cow;
 
 /// What to check.
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
@@ -133,6 +134,18 @@ pub fn check_points(
 
 type Parts = (bool, Vec<Value>, String);
 
+/// The set restricted to `dims`: the set itself when `dims` is all of it, in order.
+fn projected<'a>(points: &'a PointSet, dims: &[usize]) -> Result<Cow<'a, PointSet>, String> {
+    if dims.len() == points.dims() && dims.iter().enumerate().all(|(k, &d)| k == d) {
+        Ok(Cow::Borrowed(points))
+    } else {
+        points
+            .project(dims)
+            .map(Cow::Owned)
+            .map_err(|e| e.to_string())
+    }
+}
+
 fn nets(
     q: &NetQuery,
     base: CheckBase,
@@ -150,13 +163,8 @@ fn nets(
     let mut results = Vec::new();
     let mut text = String::new();
     for dims in targets {
-        let owned;
-        let set = if dims.len() == points.dims() && dims.iter().enumerate().all(|(k, &d)| k == d) {
-            points
-        } else {
-            owned = points.project(dims).map_err(err)?;
-            &owned
-        };
+        let set = projected(points, dims)?;
+        let set = set.as_ref();
         match q.t {
             Some(t) => {
                 let total =
@@ -228,13 +236,8 @@ fn sequences(
     let mut results = Vec::new();
     let mut text = String::new();
     for dims in targets {
-        let owned;
-        let set = if dims.len() == points.dims() && dims.iter().enumerate().all(|(k, &d)| k == d) {
-            points
-        } else {
-            owned = points.project(dims).map_err(err)?;
-            &owned
-        };
+        let set = projected(points, dims)?;
+        let set = set.as_ref();
         let (t, r) = match q.t {
             Some(t) => {
                 progress.start(0, "block-shapes");
