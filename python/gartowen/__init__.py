@@ -198,19 +198,6 @@ class CheckResult:
         return self.text
 
 
-def _describe_box(f: Dict[str, Any], b: int) -> str:
-    sides = [
-        f"dim {j} in [{a}, {a + 1})/{b}^{d}"
-        for j, (d, a) in enumerate(zip(f["shape"], f["box_index"]))
-        if d > 0
-    ]
-    where = ", ".join(sides) if sides else "[0,1)^s"
-    return (
-        f"shape {f['shape']}: the box {where} holds {f['count']} points, "
-        f"every box must hold {f['expected']}"
-    )
-
-
 def check(
     points: Any,
     base: int,
@@ -267,7 +254,9 @@ def check(
             failure = item.get("first_failure")
         if failure is not None and first_failure is None:
             first_failure = dict(failure, projection=projection)
-            first_failure["description"] = _describe_box(failure, base)
+            first_failure["description"] = _native.describe_box(
+                failure["shape"], failure["box_index"], failure["count"], failure["expected"], base
+            )
     first_t = next(iter(t_values.values()), None) if t is None else None
     return CheckResult(holds, first_t, t_values, first_failure, report, result, cert)
 

@@ -1,6 +1,6 @@
 # Type stubs of the native module. The public API is in gartowen/__init__.py; these take
 # validated arguments (see there for units and conventions).
-from typing import Any, Callable, Optional, Tuple
+from typing import Callable, List, Optional, Tuple
 
 import numpy as np
 
@@ -23,3 +23,6 @@ def verify(
     level: str, claim: str, seed: int, expect: Optional[str],
 ) -> Tuple[str, int, int, float, float]: ...
 def list_scramblers() -> str: ...
+def describe_box(
+    shape: List[int], box_index: List[int], count: int, expected: int, base: int
+) -> str: ...

@@ -8,12 +8,13 @@ mod python_scrambler;
 use arrays::{read_points, to_array, Element};
 use gartowen::certificate::{CertVerdict, Certificate, InputRecord};
 use gartowen::core::{BuildContext, Claim, PowerOfTwoBase, Scrambler};
-use gartowen::discrepancy::choice::{compute, MethodChoice};
+use gartowen::discrepancy::choice::MethodChoice;
 use gartowen::discrepancy::{Kind, Points};
 use gartowen::generate::{GeneratePlan, GenerateRequest, PointCount, PointOrder, RequestError};
 use gartowen::net_check::{check_points, NetQuery, Silent};
 use gartowen::netcheck::CheckBase;
-use gartowen::verify::{check_candidate, Candidate, Level};
+use gartowen::reports::{discrepancy_pairs, timed_discrepancy};
+use gartowen::verify::{check_candidate, registry_seeds, Candidate, Level};
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use serde_json::json;
@@ -198,39 +199,20 @@ fn discrepancy(
     let input = read_points(points, "points")?;
     let set = input.point_set()?;
     let width = input.width();
-    let (n, d) = (input.n, input.dims);
-    let words = input.words;
+    let (dims, words) = (input.dims, input.words);
     let result = py.detach(|| {
-        let timed = |p: Points| -> Result<serde_json::Value, String> {
-            let started = Instant::now();
-            let r = compute(p, kind_value, choice)?;
-            Ok(gartowen::reports::discrepancy_json(
-                &r,
-                started.elapsed().as_secs_f64(),
-                root,
-            ))
-        };
-        let mut result = timed(Points {
+        let points = Points {
             words: &words,
-            dims: d,
+            dims,
             width,
-        })?;
-        let mut pair_reports = Vec::new();
-        if let Some(all) = all_pairs {
-            for [i, j] in gartowen::discrepancy::curves::pair_list(d, all) {
-                let two: Vec<u64> = (0..n)
-                    .flat_map(|k| [words[k * d + i], words[k * d + j]])
-                    .collect();
-                let mut v = timed(Points {
-                    words: &two,
-                    dims: 2,
-                    width,
-                })?;
-                v["pair"] = json!([i, j]);
-                pair_reports.push(v);
-            }
-        }
-        result["pairs"] = json!(pair_reports);
+        };
+        let (joint, seconds) = timed_discrepancy(points, kind_value, choice)?;
+        let mut result = gartowen::reports::discrepancy_json(&joint, seconds, root);
+        let pairs = match all_pairs {
+            Some(all) => discrepancy_pairs(points, kind_value, choice, root, all)?,
+            None => Vec::new(),
+        };
+        result["pairs"] = json!(pairs);
         Ok::<_, String>(result)
     });
     let result = result.map_err(PyValueError::new_err)?;
@@ -321,38 +303,18 @@ fn verify(
             }) as Box<dyn Scrambler>)
         };
         let mut candidate =
-            match Candidate::from_builder(format!("python:{name}"), claim_value, Box::new(build)) {
-                Ok(c) => c,
-                Err(e) => return Err(e),
-            };
-        candidate.probe = Box::new(python_scrambler::PythonScrambler {
-            function: function.clone(),
-            seed,
-            base: base_value,
-            claim: claim_value,
-        });
+            Candidate::from_builder(format!("python:{name}"), claim_value, Box::new(build))?;
+        // The structural checks use the caller's seed; the laws use seeds 0, 1, 2, ….
+        candidate.probe = (candidate.with_seed)(seed)?;
         candidate.invertible = false;
         candidate.health = Box::new(move || watched.failed());
-        let registry = &registry;
-        candidate.twin = expect.as_ref().map(|twin| {
-            let twin_name = twin.clone();
-            let builder = move |s: u64| {
-                registry
-                    .build_with(
-                        &twin_name,
-                        &BuildContext {
-                            seed: s,
-                            default_base: base_value,
-                        },
-                    )
-                    .map_err(|e| e.to_string())
-            };
+        candidate.twin = expect.as_deref().map(|twin| {
             (
-                twin.clone(),
-                Box::new(builder) as Box<gartowen::verify::SeedBuilder>,
+                twin.to_string(),
+                registry_seeds(&registry, twin, base_value),
             )
         });
-        Ok(check_candidate(&candidate, level_value, 1))
+        Ok::<_, String>(check_candidate(&candidate, level_value, 1))
     });
     let seconds = started.elapsed().as_secs_f64();
     if let Some(e) = function.take_error() {
@@ -388,6 +350,27 @@ fn verify(
     Ok((cert.to_json(), calls, words, python_seconds, seconds))
 }
 
+/// One failing box in words, as `gartowen check` prints it.
+#[pyfunction]
+#[pyo3(signature = (shape, box_index, count, expected, base))]
+fn describe_box(
+    shape: Vec<u32>,
+    box_index: Vec<u64>,
+    count: u64,
+    expected: u64,
+    base: u64,
+) -> String {
+    gartowen::net_check::describe_failure(
+        &gartowen::netcheck::BoxFailure {
+            shape,
+            box_index,
+            count,
+            expected,
+        },
+        base,
+    )
+}
+
 /// `gartowen list --json`: the registry as JSON text.
 #[pyfunction]
 fn list_scramblers() -> PyResult<String> {
@@ -404,6 +387,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(discrepancy, m)?)?;
     m.add_function(wrap_pyfunction!(verify, m)?)?;
     m.add_function(wrap_pyfunction!(list_scramblers, m)?)?;
+    m.add_function(wrap_pyfunction!(describe_box, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

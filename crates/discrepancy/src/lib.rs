@@ -86,6 +86,13 @@ impl<'a> Points<'a> {
         }
     }
 
+    /// The float methods' `bound` for `value`, when its assumptions hold: exact coordinates
+    /// ([`Points::exact_in_f64`]; truncated 64-bit words void it) and a value in f64's normal
+    /// range (in high dimensions c0 and the sums overflow or underflow). Else no bound.
+    pub(crate) fn float_bound(&self, value: f64, bound: f64) -> Option<f64> {
+        (self.exact_in_f64() && value.is_normal() && bound.is_finite()).then_some(bound)
+    }
+
     /// Point i.
     #[inline(always)]
     pub fn point(&self, i: usize) -> &'a [u64] {

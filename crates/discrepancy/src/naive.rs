@@ -31,9 +31,6 @@ pub fn naive(points: Points, kind: Kind) -> Discrepancy {
         method: Method::Naive,
         value,
         exact: None,
-        // The bound assumes exact coordinates (truncated 64-bit words void it) and a value in
-        // f64's normal range (in high dimensions c0 and the sums overflow or underflow).
-        rel_error_bound: (points.exact_in_f64() && value.is_normal() && bound.is_finite())
-            .then_some(bound),
+        rel_error_bound: points.float_bound(value, bound),
     }
 }

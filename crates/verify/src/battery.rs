@@ -690,7 +690,7 @@ pub fn profile(checks: &[CheckResult]) -> Vec<(String, String)> {
 }
 
 /// Instances of registry entry `request` for any seed, in `base` unless the request names one.
-fn registry_seeds<'a>(
+pub fn registry_seeds<'a>(
     registry: &'a Registry,
     request: &'a str,
     base: PowerOfTwoBase,

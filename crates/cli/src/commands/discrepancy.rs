@@ -4,13 +4,12 @@ use crate::input::{read_points, InputFormat};
 use crate::CliError;
 use clap::{Args, ValueEnum};
 use gartowen::certificate::{CertVerdict, Certificate};
-use gartowen::discrepancy::choice::{compute, MethodChoice};
-use gartowen::discrepancy::{Discrepancy, Kind, Points};
-use gartowen::reports::discrepancy_json;
+use gartowen::discrepancy::choice::MethodChoice;
+use gartowen::discrepancy::{Kind, Points};
+use gartowen::reports::{discrepancy_json, discrepancy_pairs, timed_discrepancy};
 use serde_json::json;
 use std::path::PathBuf;
 use std::process::ExitCode;
-use std::time::Instant;
 
 /// How to compute.
 #[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
@@ -72,15 +71,14 @@ pub struct DiscrepancyArgs {
     pub json: bool,
 }
 
-fn run_method(points: Points, kind: Kind, method: MethodArg) -> Result<Discrepancy, CliError> {
-    let choice = match method {
+fn method_choice(method: MethodArg) -> MethodChoice {
+    match method {
         MethodArg::Auto => MethodChoice::Auto,
         MethodArg::Naive => MethodChoice::Naive,
         MethodArg::Compensated => MethodChoice::Compensated,
         MethodArg::Exact => MethodChoice::Exact,
         MethodArg::Fast => MethodChoice::Fast,
-    };
-    compute(points, kind, choice).map_err(|e| CliError::Usage(format!("--{e}")))
+    }
 }
 
 /// Runs `discrepancy`.
@@ -99,29 +97,14 @@ pub fn run(a: DiscrepancyArgs) -> Result<ExitCode, CliError> {
         dims: d,
         width: set.width(),
     };
-    let timed = |p: Points| -> Result<(Discrepancy, f64), CliError> {
-        let t = Instant::now();
-        let r = run_method(p, kind, a.method)?;
-        Ok((r, t.elapsed().as_secs_f64()))
+    let choice = method_choice(a.method);
+    let usage = |e: String| CliError::Usage(format!("--{e}"));
+    let (joint, secs) = timed_discrepancy(points, kind, choice).map_err(usage)?;
+    let pair_reports = match a.pairs {
+        Some(which) => discrepancy_pairs(points, kind, choice, a.root, which == PairsArg::All)
+            .map_err(usage)?,
+        None => Vec::new(),
     };
-    let (joint, secs) = timed(points)?;
-    let mut pair_reports = Vec::new();
-    if let Some(which) = a.pairs {
-        let pairs = gartowen::discrepancy::curves::pair_list(d, which == PairsArg::All);
-        for [i, j] in pairs {
-            let two: Vec<u64> = (0..n)
-                .flat_map(|k| [words[k * d + i], words[k * d + j]])
-                .collect();
-            let (r, s) = timed(Points {
-                words: &two,
-                dims: 2,
-                width: set.width(),
-            })?;
-            let mut v = discrepancy_json(&r, s, a.root);
-            v["pair"] = json!([i, j]);
-            pair_reports.push(v);
-        }
-    }
     if a.json {
         let mut result = discrepancy_json(&joint, secs, a.root);
         result["pairs"] = json!(pair_reports);
