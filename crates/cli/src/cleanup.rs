@@ -54,3 +54,21 @@ pub fn unregister(path: &Path) {
         .unwrap_or_else(|e| e.into_inner())
         .retain(|p| p != path);
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn unregistering_one_file_keeps_the_others_pending() {
+        let (a, b) = (Path::new("/tmp/.a.tmp-test"), Path::new("/tmp/.b.tmp-test"));
+        register(a);
+        register(b);
+        unregister(a);
+        let pending = PENDING.lock().unwrap().clone();
+        assert!(pending.iter().any(|p| p == b), "{pending:?}");
+        assert!(!pending.iter().any(|p| p == a), "{pending:?}");
+        unregister(b);
+        assert!(!PENDING.lock().unwrap().iter().any(|p| p == b));
+    }
+}
