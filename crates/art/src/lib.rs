@@ -11,6 +11,6 @@ pub mod peers;
 pub mod registry;
 pub mod variants;
 
-pub use engine::{ArtMutant, ArtOwen};
+pub use engine::{ArtMutant, ArtOwen, BatchKernel, BATCH_TABLE_BYTES};
 pub use grammar::Grammar;
 pub use variants::ArtVariant;

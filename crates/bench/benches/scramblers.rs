@@ -27,6 +27,7 @@ fn scramblers(c: &mut Criterion) {
     }
     let mut group = c.benchmark_group("scramble_u32");
     group.throughput(Throughput::Elements(WORDS as u64));
+    let mut built = Vec::new();
     for (request, base) in &requests {
         let s = registry
             .build_with(
@@ -38,6 +39,9 @@ fn scramblers(c: &mut Criterion) {
             )
             .expect("registry entry");
         eprintln!("table bytes: {request} = {}", s.table_bytes());
+        built.push((request.clone(), s));
+    }
+    for (request, s) in &built {
         group.bench_with_input(BenchmarkId::from_parameter(request), &words, |b, w| {
             b.iter(|| {
                 let mut acc = 0u64;
@@ -70,6 +74,29 @@ fn scramblers(c: &mut Criterion) {
             black_box(acc)
         })
     });
+    group.finish();
+
+    // The batch path on u32 words (one dimension per call, as generate and verify use it),
+    // against the scalar path above in the same run; `copy` is the floor (the buffer copy alone).
+    let words32: Vec<u32> = words.iter().map(|&w| w as u32).collect();
+    let mut group = c.benchmark_group("scramble_batch_u32");
+    group.throughput(Throughput::Elements(WORDS as u64));
+    let mut buffer = words32.clone();
+    group.bench_function("copy", |b| {
+        b.iter(|| {
+            buffer.copy_from_slice(&words32);
+            black_box(buffer[WORDS - 1])
+        })
+    });
+    for (request, s) in &built {
+        group.bench_function(BenchmarkId::from_parameter(request), |b| {
+            b.iter(|| {
+                buffer.copy_from_slice(&words32);
+                s.scramble_batch_u32(&mut buffer, 3);
+                black_box(buffer[WORDS - 1])
+            })
+        });
+    }
     group.finish();
 
     let mut group = c.benchmark_group("sequence_point_u32");

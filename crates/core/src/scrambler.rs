@@ -63,6 +63,23 @@ pub trait Scrambler: Send + Sync {
         }
     }
 
+    /// Scrambles 32-bit `words` in place for dimension `dim` (width 32); equal to
+    /// [`Scrambler::scramble_u32`] on each word. The default widens chunks of 256 words on the
+    /// stack and calls [`Scrambler::scramble_batch`], so every batch override serves it.
+    fn scramble_batch_u32(&self, words: &mut [u32], dim: u32) {
+        let mut wide = [0u64; 256];
+        for chunk in words.chunks_mut(256) {
+            let wide = &mut wide[..chunk.len()];
+            for (w, &x) in wide.iter_mut().zip(chunk.iter()) {
+                *w = x as u64;
+            }
+            self.scramble_batch(wide, Width::W32, dim);
+            for (x, &w) in chunk.iter_mut().zip(wide.iter()) {
+                *x = w as u32;
+            }
+        }
+    }
+
     /// The scrambled value as f32, truncated (never 1.0).
     fn scramble_f32(&self, x: u64, width: Width, dim: u32) -> f32 {
         word_to_f32(self.scramble(x, width, dim), width)

@@ -30,6 +30,12 @@
 //! correlation between node permutations at different positions of one tree (measured by the
 //! verify battery's dimension tests). Cost: two XORs per word.
 
+mod batch;
+#[cfg(target_arch = "x86_64")]
+mod simd;
+
+pub use batch::{BatchKernel, BATCH_TABLE_BYTES};
+
 use crate::{ArtVariant, Grammar};
 use gartowen_core::{
     derive_seed, hash_words, DigitLayout, Permutation, PowerOfTwoBase, Scrambler, SplitMix64, Width,
@@ -114,6 +120,15 @@ pub struct ArtOwen {
     step_next: Vec<u32>,
     step_local: Vec<u16>,
     step_carry: Vec<u64>,
+    /// Digits per step of the batch path's table (up to 8 bits per step while the table stays
+    /// within [`batch::BATCH_TABLE_BYTES`]).
+    batch_digits: u32,
+    /// The batch path's step table for words of at most 32 bits, one u64 per entry: the top
+    /// 32 bits of the step's contribution (see [`batch`]) above the next symbol. Empty when
+    /// the alphabet has more than 2^16 symbols.
+    batch_table: Vec<u64>,
+    /// The code that walks the batch path's lanes.
+    kernel: BatchKernel,
     /// Root symbols and shifts of dimensions 0..CACHED_ROOTS.
     dims: Vec<DimKey>,
     mutant: ArtMutant,
@@ -171,21 +186,31 @@ impl ArtOwen {
             step_next: Vec::new(),
             step_local: Vec::new(),
             step_carry: Vec::new(),
+            batch_digits: 1,
+            batch_table: Vec::new(),
+            kernel: BatchKernel::detect(),
             dims: Vec::new(),
             mutant,
         };
         art.dims = (0..CACHED_ROOTS).map(|d| art.hashed_dim(d)).collect();
-        let steps = art.build_steps();
+        let steps = art.build_steps(art.step_digits);
         art.step_next = steps.iter().map(|e| e.next).collect();
         art.step_local = steps.iter().map(|e| e.local as u16).collect();
         art.step_carry = steps.iter().map(|e| e.carry).collect();
+        if art.grammar.symbols() <= 1 << 16 {
+            art.batch_digits = batch::batch_digits(variant.q(), art.grammar.symbols());
+            art.batch_table = batch::pack(
+                &art.build_steps(art.batch_digits),
+                art.batch_digits * variant.q(),
+            );
+        }
         Ok(art)
     }
 
     /// The step table: for every symbol and every value v of `step_digits` input digits, the
     /// loop's effect with ancestors' translations left out (they are XOR-ed in at run time).
-    fn build_steps(&self) -> Vec<Step> {
-        let (q, m) = (self.q(), self.step_digits);
+    fn build_steps(&self, m: u32) -> Vec<Step> {
+        let q = self.q();
         let bits = q * m;
         let mut out = Vec::with_capacity((self.grammar.symbols() as usize) << bits);
         for s0 in 0..self.grammar.symbols() {
@@ -287,9 +312,25 @@ impl ArtOwen {
             g = (g ^ self.step_carry[idx]) << step_bits;
             s = self.step_next[idx];
         }
-        // Remaining full digits, then the partial tail digit (translation only).
-        let mut consumed = steps * step_bits;
-        for _ in steps * self.step_digits..full_digits {
+        self.finish_digits(x, width, steps * step_bits, s, g, out)
+    }
+
+    /// The digits left after the whole steps of [`Self::forward_fast`] (the first `consumed`
+    /// bits of `x` are done, `s` and `g` are the state there), then the partial tail digit
+    /// (translation only).
+    #[inline]
+    fn finish_digits(
+        &self,
+        x: u64,
+        width: Width,
+        mut consumed: u32,
+        mut s: u32,
+        mut g: u64,
+        mut out: u64,
+    ) -> u64 {
+        let q = self.q();
+        let w = width.bits();
+        while consumed + q <= w {
             consumed += q;
             let d = ((x >> (w - consumed)) & ((1 << q) - 1)) as u32;
             g ^= self.codes[s as usize];
@@ -297,7 +338,7 @@ impl ArtOwen {
             g <<= q;
             s = self.child(s, d);
         }
-        let r = w % q;
+        let r = w - consumed;
         if r != 0 {
             g ^= self.codes[s as usize];
             out = (out << r) | ((x & ((1 << r) - 1)) ^ (g >> (64 - r)));
@@ -461,6 +502,12 @@ impl Scrambler for ArtOwen {
             + self.step_next.len() * 4
             + self.step_local.len() * 2
             + self.step_carry.len() * 8
+            + self.batch_table.len() * 8
+    }
+
+    /// Interleaved chains through the step table (bit-identical to [`Scrambler::scramble`]).
+    fn scramble_batch(&self, words: &mut [u64], width: Width, dim: u32) {
+        self.forward_batch(words, width, dim)
     }
 }
 

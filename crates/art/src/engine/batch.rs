@@ -1,0 +1,270 @@
+//! The batch path: [`LANES`] words walk a step table together.
+//!
+//! One word's digit chain is serial (the next symbol is read from the entry the current one
+//! selects), so a single word waits on one table load per step. Independent words do not: the
+//! loops below advance [`LANES`] chains step by step, so their loads are in flight together
+//! and the core overlaps them. Once the loads overlap, instructions per step are the cost, so
+//! words of at most 32 bits use a table of wider steps (up to 8 bits) whose entries hold
+//! everything a step contributes to the output in one word.
+//!
+//! **The contribution form.** In the scalar loop (`forward_fast`) a step with table entry
+//! (local, carry, next) outputs `local ⊕ top(G)` and passes `G' = (G ⊕ carry) << SB` on, where
+//! `G` holds the translations pending from earlier steps in the step's relative frame and the
+//! carry's own top SB bits are already in `local`. Unrolled, the output word (top-aligned) is
+//!
+//! ```text
+//! Y = ⊕_i  E_i >> (SB·i),     E_i = (local_i << (64 − SB)) | (carry_i & (2^(64−SB) − 1)),
+//! ```
+//!
+//! so a step is one load and one XOR. **Why 32 bits of E suffice for W ≤ 32**: `E_i >> SB·i`
+//! only moves bits down, and the top W ≤ 32 bits of Y depend only on the top 32 bits of each
+//! E_i. The batch table keeps those 32 bits above the next symbol (16 bits; the low bits of
+//! the accumulator are never read), one 8-byte load per step. After the whole steps, the
+//! pending translations for the digits left over are the accumulator shifted up by the bits
+//! consumed (its top 32 bits, which are exact), and the scalar code finishes the word.
+//!
+//! Words wider than 32 bits walk the scalar path's split tables (64-bit carries), interleaved
+//! the same way. Both are bit-identical to the scalar path (tested on every registry entry).
+
+use super::{ArtOwen, Step};
+use gartowen_core::Width;
+
+/// Chains advanced together: enough independent loads in flight to hide an L2 hit.
+pub(super) const LANES: usize = 8;
+
+/// The most bytes the batch table may take; wider steps are used while it fits.
+pub const BATCH_TABLE_BYTES: usize = 1 << 20;
+
+/// Digits per batch step for base 2^q and `symbols` symbols: as many as fit in 8 bits while the
+/// table (symbols · 2^(q·digits) entries of 8 bytes) stays within [`BATCH_TABLE_BYTES`].
+pub(super) fn batch_digits(q: u32, symbols: u32) -> u32 {
+    let mut m = (8 / q).max(1);
+    while m > 1 && ((symbols as usize) << (q * m)) * 8 > BATCH_TABLE_BYTES {
+        m -= 1;
+    }
+    m
+}
+
+/// The batch table's entries from the steps of `step_bits` bits: E's top 32 bits | next.
+pub(super) fn pack(steps: &[Step], step_bits: u32) -> Vec<u64> {
+    steps
+        .iter()
+        .map(|e| {
+            let contribution =
+                ((e.local as u64) << (64 - step_bits)) | (e.carry & (u64::MAX >> step_bits));
+            (contribution & 0xFFFF_FFFF_0000_0000) | e.next as u64
+        })
+        .collect()
+}
+
+/// Walks [`LANES`] words (W ≤ 32 bits) through `steps` whole steps of the batch `table`:
+/// returns each lane's accumulator (the output and pending translations in its top 32 bits) and
+/// its symbol after the steps.
+#[inline(always)]
+pub(super) fn walk_portable<const SB: u32>(
+    table: &[u64],
+    x: [u64; LANES],
+    w: u32,
+    steps: u32,
+    root: u32,
+) -> ([u64; LANES], [usize; LANES]) {
+    // Words left-aligned: each step reads the top SB bits, then shifts them out.
+    let mut bits = x.map(|v| v << (64 - w));
+    let mut s = [root as usize; LANES];
+    let mut acc = [0u64; LANES];
+    for i in 0..steps {
+        let shift = SB * i;
+        for l in 0..LANES {
+            let v = (bits[l] >> (64 - SB)) as usize;
+            bits[l] <<= SB;
+            let e = table[(s[l] << SB) | v];
+            acc[l] ^= e >> shift;
+            s[l] = (e & 0xFFFF) as usize;
+        }
+    }
+    (acc, s)
+}
+
+/// Which code walks the lanes of the batch path. Every kernel gives the same words (tested);
+/// they differ in speed only.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum BatchKernel {
+    /// Plain Rust, [`LANES`] chains interleaved (every platform).
+    Portable,
+    /// AVX-512F gathers: one instruction loads a step's entries for eight lanes (x86-64 CPUs
+    /// that report AVX-512F at run time).
+    Avx512,
+}
+
+impl BatchKernel {
+    /// The fastest kernel this CPU runs.
+    pub fn detect() -> BatchKernel {
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("avx512f") {
+            return BatchKernel::Avx512;
+        }
+        BatchKernel::Portable
+    }
+
+    /// The kernels this CPU runs (the portable one always).
+    pub fn available() -> Vec<BatchKernel> {
+        let mut out = vec![BatchKernel::Portable];
+        if BatchKernel::detect() == BatchKernel::Avx512 {
+            out.push(BatchKernel::Avx512);
+        }
+        out
+    }
+}
+
+impl ArtOwen {
+    /// This scrambler with its batch path walked by `kernel` (for tests and benchmarks; the
+    /// default is [`BatchKernel::detect`]). Returns `None` when this CPU cannot run it.
+    pub fn with_kernel(&self, kernel: BatchKernel) -> Option<ArtOwen> {
+        BatchKernel::available().contains(&kernel).then(|| ArtOwen {
+            kernel,
+            ..self.clone()
+        })
+    }
+
+    /// Forward scramble of `words` in place for dimension `dim`, equal to
+    /// [`gartowen_core::Scrambler::scramble`] on each word.
+    pub(super) fn forward_batch(&self, words: &mut [u64], width: Width, dim: u32) {
+        // The step width as a constant, so the step's shifts are immediates.
+        if width.bits() <= 32 && !self.batch_table.is_empty() {
+            match self.q() * self.batch_digits {
+                1 => self.batch_lanes::<1, true>(words, width, dim),
+                2 => self.batch_lanes::<2, true>(words, width, dim),
+                3 => self.batch_lanes::<3, true>(words, width, dim),
+                4 => self.batch_lanes::<4, true>(words, width, dim),
+                5 => self.batch_lanes::<5, true>(words, width, dim),
+                6 => self.batch_lanes::<6, true>(words, width, dim),
+                7 => self.batch_lanes::<7, true>(words, width, dim),
+                8 => self.batch_lanes::<8, true>(words, width, dim),
+                _ => unreachable!("batch steps are 1 to 8 bits"),
+            }
+        } else {
+            match self.q() * self.step_digits {
+                3 => self.batch_lanes::<3, false>(words, width, dim),
+                4 => self.batch_lanes::<4, false>(words, width, dim),
+                5 => self.batch_lanes::<5, false>(words, width, dim),
+                6 => self.batch_lanes::<6, false>(words, width, dim),
+                7 => self.batch_lanes::<7, false>(words, width, dim),
+                8 => self.batch_lanes::<8, false>(words, width, dim),
+                _ => unreachable!("scalar steps are 3 to 8 bits"),
+            }
+        }
+    }
+
+    fn batch_lanes<const SB: u32, const PACKED: bool>(
+        &self,
+        words: &mut [u64],
+        width: Width,
+        dim: u32,
+    ) {
+        let (root, a, d) = self.keys_at(dim, width);
+        let w = width.bits();
+        let steps = w / SB;
+        #[cfg(target_arch = "x86_64")]
+        let words = if PACKED && self.kernel == BatchKernel::Avx512 {
+            use super::simd::{walk_avx512, GROUPS};
+            let mut blocks = words.chunks_exact_mut(GROUPS * LANES);
+            for block in &mut blocks {
+                // SAFETY: the kernel is Avx512 only where the CPU reported AVX-512F, and the
+                // constructor checked the table invariant `walk_avx512` needs.
+                let walked =
+                    unsafe { walk_avx512::<SB>(&self.batch_table, block, a, d, w, steps, root) };
+                let Some(walked) = walked else { continue };
+                for (g, (acc, s)) in walked.into_iter().enumerate() {
+                    let lanes = &mut block[g * LANES..(g + 1) * LANES];
+                    let x: [u64; LANES] = std::array::from_fn(|l| lanes[l] ^ a);
+                    let out = self.finish_packed(&x, w, steps * SB, acc, s);
+                    for l in 0..LANES {
+                        lanes[l] = out[l] ^ d;
+                    }
+                }
+            }
+            blocks.into_remainder()
+        } else {
+            words
+        };
+        let mut chunks = words.chunks_exact_mut(LANES);
+        for chunk in &mut chunks {
+            let chunk: &mut [u64; LANES] = chunk.try_into().expect("chunks_exact");
+            let x: [u64; LANES] = std::array::from_fn(|l| chunk[l] ^ a);
+            let out = if PACKED {
+                let (acc, s) = walk_portable::<SB>(&self.batch_table, x, w, steps, root);
+                self.finish_packed(&x, w, steps * SB, acc, s)
+            } else {
+                self.lanes_wide::<SB>(x, w, steps, root)
+            };
+            for l in 0..LANES {
+                chunk[l] = out[l] ^ d;
+            }
+        }
+        for w in chunks.into_remainder() {
+            *w = self.forward_fast(*w ^ a, width, root) ^ d;
+        }
+    }
+
+    /// Finishes [`LANES`] words (W ≤ 32) after `consumed` bits of whole steps: the output
+    /// bits and pending translations are in the accumulators' top 32 bits.
+    #[inline(always)]
+    fn finish_packed(
+        &self,
+        x: &[u64; LANES],
+        w: u32,
+        consumed: u32,
+        acc: [u64; LANES],
+        s: [usize; LANES],
+    ) -> [u64; LANES] {
+        std::array::from_fn(|l| {
+            let out = if consumed == 0 {
+                0
+            } else {
+                acc[l] >> (64 - consumed)
+            };
+            if consumed == w {
+                out
+            } else {
+                // Pending translations: the accumulator's exact top 32 bits, moved up.
+                let g = (acc[l] & 0xFFFF_FFFF_0000_0000) << consumed;
+                let width = Width::new(w).expect("a valid width");
+                self.finish_digits(x[l], width, consumed, s[l] as u32, g, out)
+            }
+        })
+    }
+
+    /// [`LANES`] words of any width through the scalar path's split tables (64-bit carries).
+    #[inline(always)]
+    fn lanes_wide<const SB: u32>(
+        &self,
+        x: [u64; LANES],
+        w: u32,
+        steps: u32,
+        root: u32,
+    ) -> [u64; LANES] {
+        let mut bits = x.map(|v| v << (64 - w));
+        let mut s = [root; LANES];
+        let mut g = [0u64; LANES];
+        let mut out = [0u64; LANES];
+        for _ in 0..steps {
+            for l in 0..LANES {
+                let v = (bits[l] >> (64 - SB)) as usize;
+                bits[l] <<= SB;
+                let idx = ((s[l] as usize) << SB) | v;
+                out[l] = (out[l] << SB) | ((self.step_local[idx] as u64) ^ (g[l] >> (64 - SB)));
+                g[l] = (g[l] ^ self.step_carry[idx]) << SB;
+                s[l] = self.step_next[idx];
+            }
+        }
+        let consumed = steps * SB;
+        let width = Width::new(w).expect("a valid width");
+        std::array::from_fn(|l| {
+            if consumed == w {
+                out[l]
+            } else {
+                self.finish_digits(x[l], width, consumed, s[l], g[l], out[l])
+            }
+        })
+    }
+}

@@ -1,0 +1,80 @@
+//! The AVX-512 kernel of the batch path: the eight lanes of [`super::batch::walk_portable`]
+//! in one 512-bit register each for the input bits, the symbols and the accumulators, and one
+//! gather per step for the eight table entries. Same arithmetic, same words.
+
+use super::batch::LANES;
+use std::arch::x86_64::*;
+
+/// Independent registers of eight lanes walked together, so that one register's gather
+/// latency is hidden behind the others'.
+pub(super) const GROUPS: usize = 6;
+
+/// The lanes' state after the whole steps, for the words whose last bits the scalar code
+/// finishes: accumulator and symbol per lane.
+pub(super) type Walked = [([u64; LANES], [usize; LANES]); GROUPS];
+
+/// [`super::batch::walk_portable`] with AVX-512F on a block of [`GROUPS`] × [`LANES`] words
+/// (input shift `a` applied here). When the whole steps consume every bit (`steps · SB = w`),
+/// the scrambled words (with output shift `d`) are written to `block` and `None` is returned;
+/// otherwise `block` is left as it was and the lanes' state is returned.
+///
+/// # Safety
+/// The CPU must support AVX-512F, and `table` must hold `symbols << SB` entries whose low 16
+/// bits (the next symbol) are below `symbols`, with `root < symbols`: then every gathered
+/// index `(s << SB) | v` is in bounds. [`super::batch::pack`] builds such tables from the
+/// grammar (whose children are symbols), and the constructor checks both.
+#[target_feature(enable = "avx512f")]
+#[allow(clippy::too_many_arguments)]
+pub(super) unsafe fn walk_avx512<const SB: u32>(
+    table: &[u64],
+    block: &mut [u64],
+    a: u64,
+    d: u64,
+    w: u32,
+    steps: u32,
+    root: u32,
+) -> Option<Walked> {
+    assert_eq!(block.len(), GROUPS * LANES, "one block");
+    let count = |n: u32| _mm_cvtsi64_si128(n as i64);
+    let sb = count(SB);
+    let top = count(64 - SB);
+    let shift_a = _mm512_set1_epi64(a as i64);
+    // SAFETY (loads and stores here and below): unaligned 64-byte accesses inside `block`
+    // (GROUPS · 8 words, asserted) and [u64; 8] arrays.
+    let mut bits: [__m512i; GROUPS] = std::array::from_fn(|g| {
+        let x = unsafe { _mm512_loadu_si512(block[g * LANES..].as_ptr().cast()) };
+        _mm512_sll_epi64(_mm512_xor_si512(x, shift_a), count(64 - w))
+    });
+    let mut s = [_mm512_set1_epi64(root as i64); GROUPS];
+    let mut acc = [_mm512_setzero_si512(); GROUPS];
+    let symbol_mask = _mm512_set1_epi64(0xFFFF);
+    for i in 0..steps {
+        let shift = count(SB * i);
+        for g in 0..GROUPS {
+            let v = _mm512_srl_epi64(bits[g], top);
+            bits[g] = _mm512_sll_epi64(bits[g], sb);
+            let idx = _mm512_or_si512(_mm512_sll_epi64(s[g], sb), v);
+            // SAFETY: idx < table.len() in every lane, by the caller's table invariant.
+            let e = unsafe { _mm512_i64gather_epi64::<8>(idx, table.as_ptr().cast()) };
+            acc[g] = _mm512_xor_si512(acc[g], _mm512_srl_epi64(e, shift));
+            s[g] = _mm512_and_si512(e, symbol_mask);
+        }
+    }
+    if steps * SB == w {
+        let shift_d = _mm512_set1_epi64(d as i64);
+        for g in 0..GROUPS {
+            let y = _mm512_xor_si512(_mm512_srl_epi64(acc[g], count(64 - w)), shift_d);
+            unsafe { _mm512_storeu_si512(block[g * LANES..].as_mut_ptr().cast(), y) };
+        }
+        return None;
+    }
+    Some(std::array::from_fn(|g| {
+        let mut acc_out = [0u64; LANES];
+        let mut s_out = [0u64; LANES];
+        unsafe {
+            _mm512_storeu_si512(acc_out.as_mut_ptr().cast(), acc[g]);
+            _mm512_storeu_si512(s_out.as_mut_ptr().cast(), s[g]);
+        }
+        (acc_out, s_out.map(|v| v as usize))
+    }))
+}
