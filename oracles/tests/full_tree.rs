@@ -58,10 +58,7 @@ fn inspector_reconstruction_equals_node_permutation_queries() {
 
 #[test]
 fn batch_mode_equals_single_queries() {
-    // 5000 random words visit about 5000 × 32 distinct nodes in base 2, more than the cache
-    // holds (MAX_CACHED_NODES), so the bounded cache starts over mid-batch.
-    const { assert!(5000 * 20 > gartowen_oracles::full_tree::MAX_CACHED_NODES) };
-    for q in [1u32, 2, 4, 8] {
+    for q in [1u32, 2, 3, 4, 8] {
         let s = FullTreeOwen::new(base(q), OwenVariant::Uniform, 5);
         let xs: Vec<u64> = (0..5000u64).map(|i| mix64(i) & 0xFFFF_FFFF).collect();
         let mut batch = xs.clone();
@@ -166,4 +163,34 @@ fn a_binary_nested_scramble_is_nested_in_base_4_but_not_conversely() {
             .kind,
         ViolationKind::NotNested
     );
+}
+
+#[test]
+fn float_outputs_computing_only_the_digits_they_keep_equal_the_full_scramble() {
+    // scramble_f32 / scramble_f64 stop after the digits inside the top 24 / 53 bits; a nested
+    // scramble's other digits cannot reach those bits, so the floats must equal the full
+    // scramble's, for every base (tail digits included) and width.
+    use gartowen_core::{word_to_f32, word_to_f64};
+    for q in 1..=8 {
+        for variant in OwenVariant::ALL {
+            let s = FullTreeOwen::new(base(q), variant, 77);
+            for bits in [8u32, 23, 24, 25, 31, 32, 53, 54, 64] {
+                let width = Width::new(bits).unwrap();
+                for i in 0..64u64 {
+                    let x = mix64(i ^ (q as u64) << 40) & width.mask();
+                    let y = s.scramble(x, width, 3);
+                    assert_eq!(
+                        s.scramble_f32(x, width, 3).to_bits(),
+                        word_to_f32(y, width).to_bits(),
+                        "f32 q={q} {variant:?} width {bits}"
+                    );
+                    assert_eq!(
+                        s.scramble_f64(x, width, 3).to_bits(),
+                        word_to_f64(y, width).to_bits(),
+                        "f64 q={q} {variant:?} width {bits}"
+                    );
+                }
+            }
+        }
+    }
 }

@@ -57,6 +57,62 @@ impl LkHash {
     fn dim_seed(&self, dim: u32) -> u32 {
         hash_words(&[self.seed, dim as u64]) as u32
     }
+
+    /// The scramble of one word with the dimension's seed already drawn.
+    #[inline(always)]
+    fn apply(flavor: LkFlavor, x: u32, seed: u32) -> u32 {
+        let r = x.reverse_bits();
+        match flavor {
+            LkFlavor::Classic => laine_karras(r, seed),
+            LkFlavor::Improved => improved_lk(r, seed),
+        }
+        .reverse_bits()
+    }
+}
+
+/// `f` on every word: a branch-free loop the compiler vectorizes (see [`lk_batch32`]).
+#[inline(always)]
+fn lk_lanes32(words: &mut [u32], f: impl Fn(u32) -> u32) {
+    for w in words.iter_mut() {
+        *w = f(*w);
+    }
+}
+
+/// [`lk_lanes32`] on 32-bit words held in `u64`.
+#[inline(always)]
+fn lk_lanes64(words: &mut [u64], f: impl Fn(u32) -> u32) {
+    for w in words.iter_mut() {
+        *w = f(*w as u32) as u64;
+    }
+}
+
+/// [`lk_lanes32`] for an LK flavor, compiled for the baseline target and once more with AVX2
+/// (taken when the CPU has it): vectorized where the hardware allows, the same bits either way.
+fn lk_batch32(words: &mut [u32], flavor: LkFlavor, seed: u32) {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") {
+        #[target_feature(enable = "avx2")]
+        fn avx2(words: &mut [u32], flavor: LkFlavor, seed: u32) {
+            lk_lanes32(words, |x| LkHash::apply(flavor, x, seed))
+        }
+        // SAFETY: AVX2 was detected on this CPU just above.
+        return unsafe { avx2(words, flavor, seed) };
+    }
+    lk_lanes32(words, |x| LkHash::apply(flavor, x, seed))
+}
+
+/// [`lk_batch32`] on 32-bit words held in `u64`.
+fn lk_batch64(words: &mut [u64], flavor: LkFlavor, seed: u32) {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") {
+        #[target_feature(enable = "avx2")]
+        fn avx2(words: &mut [u64], flavor: LkFlavor, seed: u32) {
+            lk_lanes64(words, |x| LkHash::apply(flavor, x, seed))
+        }
+        // SAFETY: AVX2 was detected on this CPU just above.
+        return unsafe { avx2(words, flavor, seed) };
+    }
+    lk_lanes64(words, |x| LkHash::apply(flavor, x, seed))
 }
 
 impl Scrambler for LkHash {
@@ -82,13 +138,14 @@ impl Scrambler for LkHash {
     }
     #[inline]
     fn scramble_u32(&self, x: u32, dim: u32) -> u32 {
-        let s = self.dim_seed(dim);
-        let r = x.reverse_bits();
-        match self.flavor {
-            LkFlavor::Classic => laine_karras(r, s),
-            LkFlavor::Improved => improved_lk(r, s),
-        }
-        .reverse_bits()
+        Self::apply(self.flavor, x, self.dim_seed(dim))
+    }
+    /// The dimension's seed drawn once, then a vectorizable loop over the words.
+    fn scramble_batch(&self, words: &mut [u64], _width: Width, dim: u32) {
+        lk_batch64(words, self.flavor, self.dim_seed(dim))
+    }
+    fn scramble_batch_u32(&self, words: &mut [u32], dim: u32) {
+        lk_batch32(words, self.flavor, self.dim_seed(dim))
     }
     fn unscramble(&self, y: u64, _width: Width, dim: u32) -> u64 {
         // The hash is a bijection that is triangular in reversed bits: recover input bits from
@@ -175,6 +232,47 @@ impl Scrambler for PerBitOwen {
     fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
         let key = hash_words(&[self.seed, dim as u64]);
         invert_bit_flips(y, width, |k, prefix| Self::flip(key, k, prefix))
+    }
+    /// Eight words at a time, bit by bit across the lanes: the 64-bit multiplies vectorize
+    /// (AVX-512DQ where the CPU has it), the same bits either way.
+    fn scramble_batch(&self, words: &mut [u64], width: Width, dim: u32) {
+        let key = hash_words(&[self.seed, dim as u64]);
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("avx512dq") {
+            #[target_feature(enable = "avx512f,avx512dq")]
+            fn wide(words: &mut [u64], width: Width, key: u64) {
+                per_bit_chunks(words, width, key)
+            }
+            // SAFETY: AVX-512F and DQ were detected on this CPU just above (DQ implies F).
+            return unsafe { wide(words, width, key) };
+        }
+        per_bit_chunks(words, width, key)
+    }
+}
+
+/// Words per chunk of [`per_bit_chunks`]: one 512-bit register of lanes.
+const PER_BIT_LANES: usize = 8;
+
+/// The per-bit scramble of `words` with dimension key `key`, [`PER_BIT_LANES`] words at a time
+/// (the loop over lanes is innermost, so it vectorizes); the rest one by one.
+#[inline(always)]
+fn per_bit_chunks(words: &mut [u64], width: Width, key: u64) {
+    let w = width.bits();
+    let mut chunks = words.chunks_exact_mut(PER_BIT_LANES);
+    for chunk in &mut chunks {
+        let x: [u64; PER_BIT_LANES] = chunk.try_into().expect("chunks_exact");
+        let mut y = x;
+        for k in 0..w {
+            for l in 0..PER_BIT_LANES {
+                // The prefix of k bits (0 for k = 0, without a shift by 64).
+                let prefix = (x[l] >> 1) >> (w - 1 - k) >> (k == 0) as u32;
+                y[l] ^= PerBitOwen::flip(key, k, prefix) << (w - 1 - k);
+            }
+        }
+        chunk.copy_from_slice(&y);
+    }
+    for x in chunks.into_remainder() {
+        *x = apply_bit_flips(*x, width, |k, prefix| PerBitOwen::flip(key, k, prefix));
     }
 }
 

@@ -12,11 +12,13 @@
 //! are identical for any thread count and the two paths can be compared failure for failure.
 
 pub mod base;
+mod box_keys;
 pub mod counting;
 mod error;
 pub mod points;
 pub mod projections;
 pub mod rank;
+mod shape_tree;
 pub mod shapes;
 
 pub use base::CheckBase;
