@@ -188,6 +188,34 @@ impl GeneratePlan {
         }
     }
 
+    /// Rows `first..first + out.len() / dims` (row-major words) into `out`: each dimension's
+    /// column built and scrambled in one batch, dimensions in parallel (the words do not
+    /// depend on the thread count).
+    pub fn block(&self, first: u64, order: PointOrder, out: &mut [u64]) {
+        use rayon::prelude::*;
+        let dims = self.seq.dims();
+        let rows = out.len() / dims;
+        let width = self.width();
+        let columns: Vec<Vec<u64>> = (0..dims)
+            .into_par_iter()
+            .map(|j| {
+                let mut column = vec![0u64; rows];
+                let position = self.start + first;
+                match order {
+                    PointOrder::Natural => self.seq.fill_points(j, position, &mut column),
+                    PointOrder::Gray => self.seq.fill_points_gray(j, position, &mut column),
+                }
+                self.scrambler.scramble_batch(&mut column, width, j as u32);
+                column
+            })
+            .collect();
+        for (j, column) in columns.iter().enumerate() {
+            for (i, &x) in column.iter().enumerate() {
+                out[i * dims + j] = x;
+            }
+        }
+    }
+
     /// Every point, row-major (`N × dims` words), each dimension scrambled in one batch.
     /// Refuses a size whose element count overflows or exceeds the address space.
     pub fn words(&self, order: PointOrder) -> Result<Vec<u64>, RequestError> {
@@ -204,18 +232,8 @@ impl GeneratePlan {
                     self.count
                 ))
             })?;
-        let width = self.width();
         let mut out = vec![0u64; n * dims];
-        let mut column = vec![0u64; n];
-        for j in 0..dims {
-            for (i, x) in column.iter_mut().enumerate() {
-                *x = self.seq.point(self.index(i as u64, order), j);
-            }
-            self.scrambler.scramble_batch(&mut column, width, j as u32);
-            for (i, &x) in column.iter().enumerate() {
-                out[i * dims + j] = x;
-            }
-        }
+        self.block(0, order, &mut out);
         Ok(out)
     }
 }

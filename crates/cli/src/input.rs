@@ -81,6 +81,9 @@ pub fn read_points(path: &Path, format: InputFormat) -> Result<PointSet, CliErro
         },
         f => f,
     };
+    if format == InputFormat::Npy {
+        return read_npy_file(path);
+    }
     let bytes = read_bounded(path)?;
     match format {
         InputFormat::Npy => read_npy(path, &bytes),
@@ -90,7 +93,7 @@ pub fn read_points(path: &Path, format: InputFormat) -> Result<PointSet, CliErro
     }
 }
 
-/// The shape a .npy header declares and the number of data bytes after the header, read
+/// The shape a .npy header declares and where the header ends (the data starts), read
 /// without trusting the header: the header length must lie inside the file and the shape's
 /// element count must not overflow (npyz would multiply it unchecked).
 fn npy_declared_shape(bytes: &[u8]) -> Result<(Vec<u64>, usize), String> {
@@ -138,11 +141,58 @@ fn npy_declared_shape(bytes: &[u8]) -> Result<(Vec<u64>, usize), String> {
     {
         return Err(format!("shape {shape:?} overflows 64 bits"));
     }
-    Ok((shape, bytes.len() - end))
+    Ok((shape, end))
 }
 
 fn read_npy(path: &Path, bytes: &[u8]) -> Result<PointSet, CliError> {
-    let (declared, data_bytes) = npy_declared_shape(bytes).map_err(|e| bad(path, e))?;
+    let (_, end) = npy_declared_shape(bytes).map_err(|e| bad(path, e))?;
+    decode_npy(path, &bytes[..end], bytes.len() - end, &bytes[end..])
+}
+
+/// Reads a regular .npy file header first, then its data straight into the point set's
+/// columns (the file's bytes are never held whole); other files go through [`read_npy`].
+fn read_npy_file(path: &Path) -> Result<PointSet, CliError> {
+    use std::io::Read;
+    let cannot = |e: std::io::Error| CliError::Io(format!("cannot read {}: {e}", path.display()));
+    let file = std::fs::File::open(path).map_err(cannot)?;
+    let meta = file.metadata().map_err(cannot)?;
+    if !meta.is_file() || meta.len() > MAX_INPUT_BYTES {
+        let bytes = read_bounded(path)?;
+        return read_npy(path, &bytes);
+    }
+    let total = meta.len() as usize;
+    let mut reader = std::io::BufReader::with_capacity(1 << 20, file);
+    // The preamble (magic, version, header length), then the header it announces.
+    let mut header = vec![0u8; 12.min(total)];
+    reader.read_exact(&mut header).map_err(cannot)?;
+    let header_len = match header.get(6) {
+        Some(1) => 10 + u16::from_le_bytes([header[8], header[9]]) as usize,
+        Some(2 | 3) if header.len() == 12 => {
+            12 + u32::from_le_bytes([header[8], header[9], header[10], header[11]]) as usize
+        }
+        // Let the byte-level parser name what is wrong.
+        _ => return read_npy(path, &header),
+    };
+    if header_len > total {
+        return read_npy(path, &header);
+    }
+    let already = header.len();
+    header.resize(header_len.max(already), 0);
+    reader.read_exact(&mut header[already..]).map_err(cannot)?;
+    let (_, end) = npy_declared_shape(&header).map_err(|e| bad(path, e))?;
+    // Bytes of a v1 header read past its end belong to the data.
+    let (head, early) = header.split_at(end);
+    decode_npy(path, head, total - end, early.chain(reader))
+}
+
+/// Decodes a .npy file from its header bytes and a reader of its `data_len` data bytes.
+fn decode_npy(
+    path: &Path,
+    bytes: &[u8],
+    data_bytes: usize,
+    mut data: impl std::io::Read,
+) -> Result<PointSet, CliError> {
+    let (declared, _) = npy_declared_shape(bytes).map_err(|e| bad(path, e))?;
     let npy =
         npyz::NpyFile::new(bytes).map_err(|e| bad(path, format!("not a valid .npy file: {e}")))?;
     let shape = npy.shape().to_vec();
@@ -186,33 +236,18 @@ fn read_npy(path: &Path, bytes: &[u8]) -> Result<PointSet, CliError> {
     }
     let fortran = npy.order() == npyz::Order::Fortran;
     let descr = npy.dtype().descr();
-    // Fortran order stores dimension-major; bring it to row-major.
-    fn row_major<T: Copy>(v: Vec<T>, n: usize, dims: usize, fortran: bool) -> Vec<T> {
-        if !fortran || dims == 1 {
-            return v;
-        }
-        (0..n * dims)
-            .map(|k| v[(k % dims) * n + k / dims])
-            .collect()
-    }
-    let err = |e: std::io::Error| bad(path, format!("cannot decode data: {e}"));
-    let set = match descr.trim_matches('\'').trim_start_matches(['<', '|', '=']) {
-        "f8" => {
-            let v: Vec<f64> = npy.into_vec().map_err(err)?;
-            PointSet::from_f64(dims, &row_major(v, n, dims, fortran))
-        }
-        "u4" => {
-            let v: Vec<u32> = npy.into_vec().map_err(err)?;
-            let v: Vec<u64> = row_major(v, n, dims, fortran)
-                .into_iter()
-                .map(u64::from)
-                .collect();
-            PointSet::from_flat(Width::W32, dims, &v)
-        }
-        "u8" => {
-            let v: Vec<u64> = npy.into_vec().map_err(err)?;
-            PointSet::from_flat(Width::W64, dims, &row_major(v, n, dims, fortran))
-        }
+    // Decoded straight into columns: no intermediate copies of the values.
+    // Element k of the data is (point, dimension) (k / dims, k % dims) in C order and
+    // (k % n, k / n) in Fortran order.
+    let point_dim: fn(usize, usize, usize) -> (usize, usize) = if fortran {
+        |k, n, _| (k % n, k / n)
+    } else {
+        |k, _, dims| (k / dims, k % dims)
+    };
+    let dtype = descr.trim_matches('\'').trim_start_matches(['<', '|', '=']);
+    let (width, item) = match dtype {
+        "f8" | "u8" => (Width::W64, 8usize),
+        "u4" => (Width::W32, 4),
         other => {
             return Err(bad(
                 path,
@@ -222,7 +257,38 @@ fn read_npy(path: &Path, bytes: &[u8]) -> Result<PointSet, CliError> {
             ))
         }
     };
-    set.map_err(|e| bad(path, e))
+    let floats = dtype == "f8";
+    let mut coords = vec![vec![0u64; n]; dims];
+    let mut block = vec![0u8; (1 << 20) / item * item];
+    let mut k = 0usize;
+    let total = n * dims;
+    while k < total {
+        let len = block.len().min((total - k) * item);
+        data.read_exact(&mut block[..len])
+            .map_err(|e| CliError::Io(format!("cannot read {}: {e}", path.display())))?;
+        for chunk in block[..len].chunks_exact(item) {
+            let (i, j) = point_dim(k, n, dims);
+            coords[j][i] = match (item, floats) {
+                (4, _) => u32::from_le_bytes(chunk.try_into().expect("4 bytes")) as u64,
+                (_, false) => u64::from_le_bytes(chunk.try_into().expect("8 bytes")),
+                (_, true) => {
+                    let v = f64::from_le_bytes(chunk.try_into().expect("8 bytes"));
+                    gartowen::core::word_from_f64(v, Width::W64).map_err(|e| {
+                        bad(
+                            path,
+                            gartowen::netcheck::NetError::BadValue {
+                                point: i,
+                                dim: j,
+                                reason: e.to_string(),
+                            },
+                        )
+                    })?
+                }
+            };
+            k += 1;
+        }
+    }
+    PointSet::from_columns(width, coords).map_err(|e| bad(path, e))
 }
 
 /// Lines that carry data: trimmed, skipping blank lines and '#' comments, with 1-based numbers.

@@ -246,8 +246,7 @@ impl ShapeWalk<'_> {
 /// Sets bit (a << shift) | (x >> cut) of `bits` for every pair of `parent` and `digits`.
 fn set_key_bits(parent: &[u32], digits: &[u32], shift: u32, cut: u32, bits: &mut [u32]) {
     #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("bmi2")
-    {
+    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("bmi2") {
         #[target_feature(enable = "avx2,bmi2")]
         fn wide(parent: &[u32], digits: &[u32], shift: u32, cut: u32, bits: &mut [u32]) {
             set_key_bits_portable(parent, digits, shift, cut, bits)

@@ -113,6 +113,44 @@ impl DigitalSequence {
         x
     }
 
+    /// Points `first..first + out.len()` of dimension `dim` (natural order) into `out`, each
+    /// from the previous one: going from index i to i + 1 flips the bits of i ⊕ (i + 1), so
+    /// the point changes by the XOR of those columns (two on average, against one per set
+    /// bit of the index for [`Self::point`]). Equal to `point(first + k, dim)` (tested).
+    pub fn fill_points(&self, dim: usize, first: u64, out: &mut [u64]) {
+        let cols = &self.columns[dim];
+        let mut x = self.point(first, dim);
+        let len = out.len();
+        for (k, slot) in out.iter_mut().enumerate() {
+            *slot = x;
+            if k + 1 < len {
+                let index = first + k as u64;
+                let mut flips = index ^ (index + 1);
+                while flips != 0 {
+                    x ^= cols[(flips.trailing_zeros() & 63) as usize];
+                    flips &= flips - 1;
+                }
+            }
+        }
+    }
+
+    /// Points of Gray-code indices gray(first + k), k < out.len(), of dimension `dim`:
+    /// consecutive Gray codes differ in the bit at the trailing zeros of the next position,
+    /// so each point is the previous one XOR one column. Equal to `point(gray_code(first + k),
+    /// dim)` (tested).
+    pub fn fill_points_gray(&self, dim: usize, first: u64, out: &mut [u64]) {
+        let cols = &self.columns[dim];
+        let mut x = self.point(first ^ (first >> 1), dim);
+        let len = out.len();
+        for (k, slot) in out.iter_mut().enumerate() {
+            *slot = x;
+            if k + 1 < len {
+                let next = first + k as u64 + 1;
+                x ^= cols[(next.trailing_zeros() & 63) as usize];
+            }
+        }
+    }
+
     /// Like [`Self::point`], but errors when `index` is past the last point.
     pub fn try_point(&self, index: u64, dim: usize) -> Result<u64, SeqError> {
         if self.index_bits < 64 && index >> self.index_bits != 0 {

@@ -139,3 +139,31 @@ proptest! {
         prop_assert_eq!(c32[c] >> 16, c16[c]);
     }
 }
+
+#[test]
+fn incremental_fills_equal_random_access_in_both_orders() {
+    use gartowen_seq::{gray_code, SequenceKind};
+    for kind in SequenceKind::ALL {
+        let seq = kind.build(3, gartowen_core::Width::W32).unwrap();
+        for first in [0u64, 1, 7, 1000, (1 << 20) - 3] {
+            for len in [0usize, 1, 2, 77] {
+                for dim in 0..3 {
+                    let mut natural = vec![0u64; len];
+                    seq.fill_points(dim, first, &mut natural);
+                    let mut gray = vec![0u64; len];
+                    seq.fill_points_gray(dim, first, &mut gray);
+                    for k in 0..len {
+                        let i = first + k as u64;
+                        assert_eq!(natural[k], seq.point(i, dim), "{} natural {i}", kind.name());
+                        assert_eq!(
+                            gray[k],
+                            seq.point(gray_code(i), dim),
+                            "{} gray {i}",
+                            kind.name()
+                        );
+                    }
+                }
+            }
+        }
+    }
+}

@@ -106,10 +106,13 @@ fn plan(a: &GenerateArgs) -> Result<GeneratePlan, CliError> {
     })?)
 }
 
-/// Fills row i of a [`RowSource`] into the buffer.
-pub type RowFiller<'a> = Box<dyn Fn(u64, &mut [u64]) + 'a>;
+/// Fills rows `first..first + buf.len() / dims` of a [`RowSource`] into `buf` (row-major).
+pub type BlockFiller<'a> = Box<dyn Fn(u64, &mut [u64]) + 'a>;
 
-/// Rows of words to write: `row(i, buf)` fills point i (0 ≤ i < count) of `dims` words.
+/// Rows written per block: a few MB of words, enough for batch scrambling to pay.
+const BLOCK_ROWS: u64 = 1 << 14;
+
+/// Rows of words to write: `block(first, buf)` fills points first.. (< count) of `dims` words.
 pub struct RowSource<'a> {
     /// Word width of the rows.
     pub width: Width,
@@ -117,22 +120,34 @@ pub struct RowSource<'a> {
     pub dims: usize,
     /// Number of points.
     pub count: u64,
-    /// Fills one row.
-    pub row: RowFiller<'a>,
+    /// Fills a block of rows.
+    pub block: BlockFiller<'a>,
 }
 
 impl RowSource<'_> {
+    /// Calls `emit` with each block of rows (row-major words) in order.
+    fn for_each_block(
+        &self,
+        mut emit: impl FnMut(&[u64]) -> Result<(), CliError>,
+    ) -> Result<(), CliError> {
+        let mut buf = Vec::new();
+        let mut first = 0u64;
+        while first < self.count {
+            let rows = BLOCK_ROWS.min(self.count - first) as usize;
+            buf.resize(rows * self.dims, 0);
+            (self.block)(first, &mut buf);
+            emit(&buf)?;
+            first += rows as u64;
+        }
+        Ok(())
+    }
+
     /// Calls `emit` with each row in order.
     fn for_each(
         &self,
         mut emit: impl FnMut(&[u64]) -> Result<(), CliError>,
     ) -> Result<(), CliError> {
-        let mut buf = vec![0u64; self.dims];
-        for i in 0..self.count {
-            (self.row)(i, &mut buf);
-            emit(&buf)?;
-        }
-        Ok(())
+        self.for_each_block(|block| block.chunks_exact(self.dims).try_for_each(&mut emit))
     }
 }
 
@@ -146,40 +161,66 @@ fn rows(p: &GeneratePlan, order: OrderArg) -> RowSource<'_> {
         width: p.width(),
         dims: p.seq.dims(),
         count: p.count,
-        row: Box::new(move |i, row| p.row(i, order, row)),
+        block: Box::new(move |first, buf| p.block(first, order, buf)),
     }
 }
 
-/// Writes the rows as an (N, d) .npy array of `T`, converting each word with `conv`.
-fn write_npy_as<T: npyz::AutoSerialize>(
+/// The .npy (format 1.0) header of a C-order little-endian array of dtype `descr` and
+/// shape (rows, dims): magic, version, header length, the dict padded with spaces to a
+/// multiple of 64 bytes and ending in a newline (as NumPy writes it).
+fn npy_header(descr: &str, rows: u64, dims: usize) -> Vec<u8> {
+    let mut dict =
+        format!("{{'descr': '{descr}', 'fortran_order': False, 'shape': ({rows}, {dims}), }}");
+    let unpadded = 10 + dict.len() + 1;
+    dict.push_str(&" ".repeat(unpadded.next_multiple_of(64) - unpadded));
+    dict.push('\n');
+    let mut out = b"\x93NUMPY\x01\x00".to_vec();
+    out.extend_from_slice(&(dict.len() as u16).to_le_bytes());
+    out.extend_from_slice(dict.as_bytes());
+    out
+}
+
+/// Writes the rows as an (N, d) .npy array of `item`-byte little-endian elements, `encode`
+/// writing one word's bytes. Blocks are encoded in parallel (bytes do not depend on the
+/// thread count) and written whole.
+fn write_npy_as(
     src: &RowSource,
     out: &mut dyn Write,
-    conv: impl Fn(u64) -> T,
+    descr: &str,
+    item: usize,
+    encode: impl Fn(u64, &mut [u8]) + Sync,
 ) -> Result<(), CliError> {
-    use npyz::WriterBuilder;
-    let npy = |e: std::io::Error| CliError::Io(format!("npy write failed: {e}"));
-    let mut w = npyz::WriteOptions::<T>::new()
-        .default_dtype()
-        .shape(&[src.count, src.dims as u64])
-        .writer(out)
-        .begin_nd()
-        .map_err(npy)?;
-    src.for_each(|row| {
-        for &x in row {
-            w.push(&conv(x)).map_err(npy)?;
-        }
-        Ok(())
-    })?;
-    w.finish().map_err(npy)
+    use rayon::prelude::*;
+    out.write_all(&npy_header(descr, src.count, src.dims))
+        .map_err(io_err)?;
+    let mut bytes = Vec::new();
+    src.for_each_block(|block| {
+        bytes.resize(block.len() * item, 0);
+        bytes
+            .par_chunks_mut(item * 4096)
+            .zip(block.par_chunks(4096))
+            .for_each(|(b, w)| {
+                for (b, &x) in b.chunks_exact_mut(item).zip(w) {
+                    encode(x, b);
+                }
+            });
+        out.write_all(&bytes).map_err(io_err)
+    })
 }
 
 /// Writes rows as .npy: float64 values, or uint32/uint64 words with `words`.
 pub fn write_npy(src: &RowSource, words: bool, out: &mut dyn Write) -> Result<(), CliError> {
     let width = src.width;
     match (words, width.bits()) {
-        (false, _) => write_npy_as(src, out, |x| word_to_f64(x, width)),
-        (true, 32) => write_npy_as(src, out, |x| x as u32),
-        (true, _) => write_npy_as(src, out, |x| x),
+        (false, _) => write_npy_as(src, out, "<f8", 8, |x, b| {
+            b.copy_from_slice(&word_to_f64(x, width).to_le_bytes())
+        }),
+        (true, 32) => write_npy_as(src, out, "<u4", 4, |x, b| {
+            b.copy_from_slice(&(x as u32).to_le_bytes())
+        }),
+        (true, _) => write_npy_as(src, out, "<u8", 8, |x, b| {
+            b.copy_from_slice(&x.to_le_bytes())
+        }),
     }
 }
 

@@ -102,9 +102,11 @@ pub fn run(a: ScrambleArgs) -> Result<ExitCode, CliError> {
         width,
         dims: points.dims(),
         count: points.len() as u64,
-        row: Box::new(|i, row| {
-            for (j, x) in row.iter_mut().enumerate() {
-                *x = columns[j][i as usize];
+        block: Box::new(|first, buf| {
+            for (i, row) in buf.chunks_exact_mut(columns.len()).enumerate() {
+                for (j, x) in row.iter_mut().enumerate() {
+                    *x = columns[j][first as usize + i];
+                }
             }
         }),
     };
