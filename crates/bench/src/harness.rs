@@ -161,10 +161,14 @@ fn points(
             method.scrambler
         )));
     }
-    let mut v = Vec::with_capacity(n * dims);
-    for i in 0..n as u64 {
-        for j in 0..dims {
-            v.push(scrambler.scramble_f64(seq.point(i, j), Width::W32, j as u32));
+    // Each dimension's column through the batch path, then row-major values.
+    let mut v = vec![0.0; n * dims];
+    let mut column = vec![0u64; n];
+    for j in 0..dims {
+        seq.fill_points(j, 0, &mut column);
+        scrambler.scramble_batch(&mut column, Width::W32, j as u32);
+        for (i, &x) in column.iter().enumerate() {
+            v[i * dims + j] = gartowen::core::word_to_f64(x, Width::W32);
         }
     }
     Ok((v, start.elapsed().as_secs_f64()))

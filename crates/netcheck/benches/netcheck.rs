@@ -2,7 +2,7 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use gartowen_core::Width;
-use gartowen_netcheck::counting::{check_net, check_sequence};
+use gartowen_netcheck::counting::{check_net, check_net_per_shape, check_sequence};
 use gartowen_netcheck::{rank, CheckBase, PointSet, ProjectionSpec};
 use gartowen_seq::{sobol, sz, DigitalSequence};
 
@@ -31,6 +31,16 @@ fn benches(c: &mut Criterion) {
         b.iter(|| {
             assert!(
                 check_net(&sz16, CheckBase::new(16).unwrap(), 4, 0)
+                    .unwrap()
+                    .holds
+            )
+        })
+    });
+    // The reference in the same run: every shape's keys from scratch, one thread.
+    g.bench_function("per_shape_reference_sz16_16d_base16_n16^4_t0", |b| {
+        b.iter(|| {
+            assert!(
+                check_net_per_shape(&sz16, CheckBase::new(16).unwrap(), 4, 0)
                     .unwrap()
                     .holds
             )

@@ -182,6 +182,57 @@ pub fn check_net_with_progress(
     )
 }
 
+/// [`check_net`] by the plain path: every shape in order, its keys built from scratch from
+/// its parts, one thread, no shape tree. The reference the tree walk is tested and
+/// benchmarked against (same report, field for field).
+pub fn check_net_per_shape(
+    points: &PointSet,
+    base: CheckBase,
+    m: u32,
+    t: u32,
+) -> Result<NetReport, NetError> {
+    let t_count = validate(points, base, m, t)?;
+    let k = m - t;
+    let prefix = prefixes(points, base, k, 0..points.len());
+    let views = views(&prefix);
+    let shape_list = shapes(k, points.dims())?;
+    let mut scratch = Vec::new();
+    for (i, shape) in shape_list.iter().enumerate() {
+        let parts = key_parts(&views, base, k, shape);
+        let filler = parts_filler(&parts, base);
+        let failure = check_shape(
+            filler,
+            0,
+            points.len(),
+            base,
+            k,
+            t_count,
+            shape,
+            &mut scratch,
+        );
+        if failure.is_some() {
+            return Ok(NetReport {
+                base: base.get(),
+                m,
+                t,
+                dims: points.dims(),
+                holds: false,
+                shapes_checked: i as u64 + 1,
+                first_failure: failure,
+            });
+        }
+    }
+    Ok(NetReport {
+        base: base.get(),
+        m,
+        t,
+        dims: points.dims(),
+        holds: true,
+        shapes_checked: shape_list.len() as u64,
+        first_failure: None,
+    })
+}
+
 /// Which failure a level check reports.
 #[derive(Clone, Copy)]
 enum Search {

@@ -260,3 +260,72 @@ proptest! {
         prop_assert_eq!(t_count, rank::t_value(&seq, &[0, 1, 2], 2, m).unwrap());
     }
 }
+
+#[test]
+fn the_shape_tree_walk_equals_the_per_shape_path_report_for_report() {
+    // Two paths to every net verdict: the tree walk (incremental keys, parallel, early exit,
+    // the fused t = 0 pass) and the plain per-shape path. Sets: digital nets (hold at their t,
+    // fail below), the same with one coordinate moved (fail at some deep shape), and random
+    // words (fail early); bases 2, 3, 4, 5, 8, 16; t from 0 up.
+    use gartowen_netcheck::counting::check_net_per_shape;
+    let mut rng = gartowen_core::SplitMix64::new(19);
+    let mut compared = 0;
+    for (b, m, dims) in [
+        (2u64, 10u32, 5usize),
+        (3, 5, 3),
+        (4, 5, 4),
+        (5, 3, 4),
+        (8, 3, 6),
+        (16, 3, 8),
+    ] {
+        let base = CheckBase::new(b).unwrap();
+        let n = b.pow(m) as usize;
+        let width = Width::W32;
+        // A digital net in base 2^q where b is one; random words otherwise.
+        let net: Option<PointSet> = match b {
+            2 => Some(points(
+                &sobol::sequence(dims, width).unwrap(),
+                &(0..dims).collect::<Vec<_>>(),
+                n as u64,
+            )),
+            4 => Some(points(
+                &sz::sz4(dims, width).unwrap(),
+                &(0..dims).collect::<Vec<_>>(),
+                n as u64,
+            )),
+            16 => Some(points(
+                &sz::sz16(dims, width).unwrap(),
+                &(0..dims).collect::<Vec<_>>(),
+                n as u64,
+            )),
+            _ => None,
+        };
+        let random = PointSet::from_columns(
+            width,
+            (0..dims)
+                .map(|_| (0..n).map(|_| rng.next_u32() as u64).collect())
+                .collect(),
+        )
+        .unwrap();
+        let mut sets = vec![random];
+        if let Some(net) = net {
+            let mut moved = net.clone();
+            let (i, j) = (
+                rng.bounded(n as u32) as usize,
+                rng.bounded(dims as u32) as usize,
+            );
+            moved.set(i, j, net.column(j)[i] ^ 1 << 20);
+            sets.push(net);
+            sets.push(moved);
+        }
+        for set in &sets {
+            for t in 0..=m.min(3) {
+                let fast = check_net(set, base, m, t).unwrap();
+                let plain = check_net_per_shape(set, base, m, t).unwrap();
+                assert_eq!(fast, plain, "base {b} m {m} t {t} dims {dims}");
+                compared += 1;
+            }
+        }
+    }
+    assert!(compared >= 40, "{compared} reports compared");
+}

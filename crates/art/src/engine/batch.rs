@@ -171,8 +171,19 @@ impl ArtOwen {
             for block in &mut blocks {
                 // SAFETY: the kernel is Avx512 only where the CPU reported AVX-512F, and the
                 // constructor checked the table invariant `walk_avx512` needs.
-                let walked =
-                    unsafe { walk_avx512::<SB>(&self.batch_table, block, a, d, w, steps, root) };
+                let walked = unsafe {
+                    walk_avx512::<SB>(
+                        &self.batch_table,
+                        &self.codes,
+                        self.q(),
+                        block,
+                        a,
+                        d,
+                        w,
+                        steps,
+                        root,
+                    )
+                };
                 let Some(walked) = walked else { continue };
                 for (g, (acc, s)) in walked.into_iter().enumerate() {
                     let lanes = &mut block[g * LANES..(g + 1) * LANES];

@@ -14,9 +14,11 @@ pub(super) const GROUPS: usize = 6;
 pub(super) type Walked = [([u64; LANES], [usize; LANES]); GROUPS];
 
 /// [`super::batch::walk_portable`] with AVX-512F on a block of [`GROUPS`] × [`LANES`] words
-/// (input shift `a` applied here). When the whole steps consume every bit (`steps · SB = w`),
-/// the scrambled words (with output shift `d`) are written to `block` and `None` is returned;
-/// otherwise `block` is left as it was and the lanes' state is returned.
+/// (input shift `a` applied here). When the whole steps leave at most a partial tail digit
+/// (r = w − steps·SB < q bits, translation only: its node XORs the top r bits of the pending
+/// translations and of the code of the symbol reached, gathered from `codes`), the scrambled
+/// words (with output shift `d`) are written to `block` and `None` is returned; otherwise
+/// `block` is left as it was and the lanes' state is returned.
 ///
 /// # Safety
 /// The CPU must support AVX-512F, and `table` must hold `symbols << SB` entries whose low 16
@@ -27,6 +29,8 @@ pub(super) type Walked = [([u64; LANES], [usize; LANES]); GROUPS];
 #[allow(clippy::too_many_arguments)]
 pub(super) unsafe fn walk_avx512<const SB: u32>(
     table: &[u64],
+    codes: &[u64],
+    q: u32,
     block: &mut [u64],
     a: u64,
     d: u64,
@@ -60,10 +64,32 @@ pub(super) unsafe fn walk_avx512<const SB: u32>(
             s[g] = _mm512_and_si512(e, symbol_mask);
         }
     }
-    if steps * SB == w {
+    let consumed = steps * SB;
+    let r = w - consumed;
+    if r < q {
         let shift_d = _mm512_set1_epi64(d as i64);
         for g in 0..GROUPS {
-            let y = _mm512_xor_si512(_mm512_srl_epi64(acc[g], count(64 - w)), shift_d);
+            // Output digits of the whole steps: the top `consumed` bits of the accumulator.
+            let mut y = if consumed == 0 {
+                _mm512_setzero_si512()
+            } else {
+                _mm512_srl_epi64(acc[g], count(64 - consumed))
+            };
+            if r > 0 {
+                // The tail: its r input bits XOR the top r bits of (pending ⊕ code[s]); the
+                // pending translations are the accumulator's exact top 32 bits moved up.
+                // SAFETY: s < symbols = codes.len() in every lane (the table invariant).
+                let code = unsafe { _mm512_i64gather_epi64::<8>(s[g], codes.as_ptr().cast()) };
+                let pending = _mm512_sll_epi64(acc[g], count(consumed));
+                let t = _mm512_srl_epi64(_mm512_xor_si512(pending, code), count(64 - r));
+                let x = _mm512_xor_si512(
+                    unsafe { _mm512_loadu_si512(block[g * LANES..].as_ptr().cast()) },
+                    shift_a,
+                );
+                let tail = _mm512_and_si512(x, _mm512_set1_epi64(((1u64 << r) - 1) as i64));
+                y = _mm512_or_si512(_mm512_sll_epi64(y, count(r)), _mm512_xor_si512(tail, t));
+            }
+            let y = _mm512_xor_si512(y, shift_d);
             unsafe { _mm512_storeu_si512(block[g * LANES..].as_mut_ptr().cast(), y) };
         }
         return None;
