@@ -104,6 +104,10 @@ pub fn width_from_bits(bits: u32) -> Result<Width, RequestError> {
     }
 }
 
+/// Rows per parallel task of [`GeneratePlan::fill_rows`]: the task's columns (8 KiB of words
+/// per dimension) stay in the core's cache between being scrambled and written out as rows.
+pub const TASK_ROWS: usize = 1024;
+
 impl GeneratePlan {
     /// Validates `r`: sequence and dimensions, the index range, the scrambler and its support
     /// of the width.
@@ -188,32 +192,50 @@ impl GeneratePlan {
         }
     }
 
-    /// Rows `first..first + out.len() / dims` (row-major words) into `out`: each dimension's
-    /// column built and scrambled in one batch, dimensions in parallel (the words do not
-    /// depend on the thread count).
+    /// Rows `first..first + out.len() / dims` (row-major words) into `out`, as
+    /// [`GeneratePlan::fill_rows`] without conversion.
     pub fn block(&self, first: u64, order: PointOrder, out: &mut [u64]) {
+        self.fill_rows(first, order, out, |x| x);
+    }
+
+    /// Rows `first..first + out.len() / dims` into `out` (row-major), each word passed through
+    /// `convert` (to f64 values, say). Tasks of [`TASK_ROWS`] rows run in parallel; in each,
+    /// every dimension's column is filled incrementally and scrambled in one batch, then the
+    /// rows are written out, so memory beyond `out` is one task's columns per worker, and the
+    /// values do not depend on the thread count.
+    pub fn fill_rows<T: Send>(
+        &self,
+        first: u64,
+        order: PointOrder,
+        out: &mut [T],
+        convert: impl Fn(u64) -> T + Sync,
+    ) {
         use rayon::prelude::*;
         let dims = self.seq.dims();
-        let rows = out.len() / dims;
         let width = self.width();
-        let columns: Vec<Vec<u64>> = (0..dims)
-            .into_par_iter()
-            .map(|j| {
-                let mut column = vec![0u64; rows];
-                let position = self.start + first;
-                match order {
-                    PointOrder::Natural => self.seq.fill_points(j, position, &mut column),
-                    PointOrder::Gray => self.seq.fill_points_gray(j, position, &mut column),
-                }
-                self.scrambler.scramble_batch(&mut column, width, j as u32);
-                column
-            })
-            .collect();
-        for (j, column) in columns.iter().enumerate() {
-            for (i, &x) in column.iter().enumerate() {
-                out[i * dims + j] = x;
-            }
-        }
+        out.par_chunks_mut(TASK_ROWS * dims)
+            .enumerate()
+            .for_each_init(
+                || vec![0u64; TASK_ROWS * dims],
+                |columns, (task, chunk)| {
+                    let rows = chunk.len() / dims;
+                    let position = self.start + first + (task * TASK_ROWS) as u64;
+                    for (j, column) in columns.chunks_exact_mut(TASK_ROWS).enumerate() {
+                        let column = &mut column[..rows];
+                        match order {
+                            PointOrder::Natural => self.seq.fill_points(j, position, column),
+                            PointOrder::Gray => self.seq.fill_points_gray(j, position, column),
+                        }
+                        self.scrambler.scramble_batch(column, width, j as u32);
+                    }
+                    // Rows written in order (sequential stores), reading the columns across.
+                    for (i, row) in chunk.chunks_exact_mut(dims).enumerate() {
+                        for (j, v) in row.iter_mut().enumerate() {
+                            *v = convert(columns[j * TASK_ROWS + i]);
+                        }
+                    }
+                },
+            );
     }
 
     /// Every point, row-major (`N × dims` words), each dimension scrambled in one batch.
@@ -235,5 +257,10 @@ impl GeneratePlan {
         let mut out = vec![0u64; n * dims];
         self.block(0, order, &mut out);
         Ok(out)
+    }
+
+    /// The number of points and the dimensions: the (rows, columns) of [`Self::words`].
+    pub fn shape(&self) -> (u64, usize) {
+        (self.count, self.seq.dims())
     }
 }

@@ -57,18 +57,45 @@ fn generate<'py>(
     } else {
         PointOrder::Natural
     };
-    let (flat, width) = py
-        .detach(|| {
-            let plan = GeneratePlan::new(&request)?;
-            Ok::<_, gartowen::generate::RequestError>((plan.words(order)?, plan.width()))
-        })
+    let plan = py
+        .detach(|| GeneratePlan::new(&request))
         .map_err(value_error)?;
-    let element = match (words, width.bits()) {
-        (false, _) => Element::F64,
-        (true, 32) => Element::U32,
-        (true, _) => Element::U64,
-    };
-    to_array(py, flat, n as usize, dims, width, element)
+    let width = plan.width();
+    let (count, dims) = plan.shape();
+    let rows = usize::try_from(count)
+        .ok()
+        .filter(|&r| {
+            r.checked_mul(dims)
+                .is_some_and(|t| t <= isize::MAX as usize / 8)
+        })
+        .ok_or_else(|| {
+            value_error(format!(
+                "{count} points × {dims} dimensions do not fit in memory"
+            ))
+        })?;
+    // The NumPy array is allocated once and filled in place with the GIL released.
+    fn filled<'py, T: numpy::Element + Send>(
+        py: Python<'py>,
+        plan: &GeneratePlan,
+        order: PointOrder,
+        shape: [usize; 2],
+        convert: impl Fn(u64) -> T + Sync + Send,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let array = numpy::PyArray2::<T>::zeros(py, shape, false);
+        // SAFETY: the array was just created here, so no other reference to its data exists
+        // while it is filled.
+        let data = unsafe { numpy::PyArrayMethods::as_slice_mut(&array) }.map_err(value_error)?;
+        py.detach(|| plan.fill_rows(0, order, data, convert));
+        Ok(array.into_any())
+    }
+    let shape = [rows, dims];
+    match (words, width.bits()) {
+        (false, _) => filled(py, &plan, order, shape, move |x| {
+            gartowen::core::word_to_f64(x, width)
+        }),
+        (true, 32) => filled(py, &plan, order, shape, |x| x as u32),
+        (true, _) => filled(py, &plan, order, shape, |x| x),
+    }
 }
 
 /// The points (or words) scrambled by a registry scrambler, column j as dimension j; the

@@ -16,8 +16,9 @@ pub fn word_to_f32(x: u64, width: Width) -> f32 {
     if w > 24 {
         ((x >> (w - 24)) as u32) as f32 * (1.0 / 16_777_216.0)
     } else {
-        // Exact: a W ≤ 24-bit integer fits the f32 significand.
-        (x as u32) as f32 * f32::powi(2.0, -(w as i32))
+        // Exact: a W ≤ 24-bit integer fits the f32 significand; 2^-W built from its bits
+        // (a libm power per value would cost more than the rest).
+        (x as u32) as f32 * f32::from_bits((127 - w) << 23)
     }
 }
 
@@ -34,7 +35,7 @@ pub fn word_to_f64(x: u64, width: Width) -> f64 {
     if w > 53 {
         (x >> (w - 53)) as f64 * (1.0 / 9_007_199_254_740_992.0)
     } else {
-        x as f64 * f64::powi(2.0, -(w as i32))
+        x as f64 * f64::from_bits(((1023 - w) as u64) << 52)
     }
 }
 
@@ -104,5 +105,49 @@ mod tests {
             word_from_f64(1.0 - 2f64.powi(-53), Width::W64),
             Ok(u64::MAX - 2047)
         );
+    }
+}
+
+#[cfg(test)]
+mod scale_tests {
+    use super::*;
+
+    #[test]
+    fn the_power_of_two_built_from_bits_equals_the_exact_scale_at_every_width() {
+        // 2^-W from the exponent bits against powi, for every width and words at both ends.
+        for w in 1..=64u32 {
+            let width = Width::new(w).unwrap();
+            for x in [
+                0u64,
+                1,
+                2,
+                3,
+                width.mask() >> 1,
+                width.mask() - 1,
+                width.mask(),
+            ] {
+                let x = x & width.mask();
+                let f64_ref = if w > 53 {
+                    (x >> (w - 53)) as f64 * f64::powi(2.0, -53)
+                } else {
+                    x as f64 * f64::powi(2.0, -(w as i32))
+                };
+                assert_eq!(
+                    word_to_f64(x, width).to_bits(),
+                    f64_ref.to_bits(),
+                    "f64 W={w}"
+                );
+                let f32_ref = if w > 24 {
+                    ((x >> (w - 24)) as u32) as f32 * f32::powi(2.0, -24)
+                } else {
+                    (x as u32) as f32 * f32::powi(2.0, -(w as i32))
+                };
+                assert_eq!(
+                    word_to_f32(x, width).to_bits(),
+                    f32_ref.to_bits(),
+                    "f32 W={w}"
+                );
+            }
+        }
     }
 }

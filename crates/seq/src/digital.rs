@@ -114,22 +114,25 @@ impl DigitalSequence {
     }
 
     /// Points `first..first + out.len()` of dimension `dim` (natural order) into `out`, each
-    /// from the previous one: going from index i to i + 1 flips the bits of i ⊕ (i + 1), so
-    /// the point changes by the XOR of those columns (two on average, against one per set
-    /// bit of the index for [`Self::point`]). Equal to `point(first + k, dim)` (tested).
+    /// from the previous one: going from index i to i + 1 flips bits 0..=t, t the number of
+    /// trailing ones of i, so the point changes by the XOR of columns 0..=t, read from a
+    /// table of prefix XORs (one look-up per point, against one XOR per set bit of the index
+    /// for [`Self::point`]). Equal to `point(first + k, dim)` (tested).
     pub fn fill_points(&self, dim: usize, first: u64, out: &mut [u64]) {
         let cols = &self.columns[dim];
+        let mut prefix_xor = [0u64; 64];
+        let mut acc = 0u64;
+        for (p, &c) in prefix_xor.iter_mut().zip(cols.iter()) {
+            acc ^= c;
+            *p = acc;
+        }
         let mut x = self.point(first, dim);
         let len = out.len();
         for (k, slot) in out.iter_mut().enumerate() {
             *slot = x;
             if k + 1 < len {
                 let index = first + k as u64;
-                let mut flips = index ^ (index + 1);
-                while flips != 0 {
-                    x ^= cols[(flips.trailing_zeros() & 63) as usize];
-                    flips &= flips - 1;
-                }
+                x ^= prefix_xor[((!index).trailing_zeros() & 63) as usize];
             }
         }
     }
