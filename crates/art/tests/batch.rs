@@ -1,0 +1,112 @@
+//! The batch paths of this crate against their scalar paths, bit for bit: every ART variant
+//! with every batch kernel this CPU runs (tables small and large, a mutant grammar, widths
+//! with and without partial tail digits, word counts leaving remainders after the SIMD blocks
+//! and the interleaved lanes), and the LK and per-bit hashes. The registry-wide version is
+//! the root test `tests/batch_paths.rs`.
+
+use gartowen_art::peers::{LkFlavor, LkHash, PerBitOwen};
+use gartowen_art::{ArtMutant, ArtOwen, ArtVariant, BatchKernel};
+use gartowen_core::{Scrambler, SplitMix64, Width};
+
+fn words(seed: u64, len: usize) -> Vec<u64> {
+    let mut rng = SplitMix64::new(seed);
+    (0..len).map(|_| rng.next_u64()).collect()
+}
+
+fn assert_batch_equals_scalar(s: &dyn Scrambler, reference: &dyn Scrambler, label: &str) {
+    // 64·3 + 8·2 + 5 words: three SIMD blocks, two lanes of eight, five left over.
+    let input = words(7, 64 * 3 + 8 * 2 + 5);
+    for bits in [1u32, 5, 8, 13, 24, 26, 28, 30, 31, 32, 33, 48, 64] {
+        let width = Width::new(bits).unwrap();
+        if !s.supports_width(width) {
+            continue;
+        }
+        for dim in [0u32, 4, 1000] {
+            let mut batch: Vec<u64> = input.iter().map(|&w| w & width.mask()).collect();
+            let original = batch.clone();
+            s.scramble_batch(&mut batch, width, dim);
+            for (i, (&x, &y)) in original.iter().zip(&batch).enumerate() {
+                assert_eq!(
+                    y,
+                    reference.scramble(x, width, dim),
+                    "{label}: width {bits} dim {dim} word {i} ({x:#x})"
+                );
+            }
+        }
+    }
+    if s.supports_width(Width::W32) {
+        let input: Vec<u32> = words(8, 300).iter().map(|&w| w as u32).collect();
+        let mut batch = input.clone();
+        s.scramble_batch_u32(&mut batch, 2);
+        for (&x, &y) in input.iter().zip(&batch) {
+            assert_eq!(y, reference.scramble_u32(x, 2), "{label}: u32 batch {x:#x}");
+        }
+    }
+}
+
+#[test]
+fn every_art_kernel_equals_the_scalar_path() {
+    let kernels = BatchKernel::available();
+    assert!(kernels.contains(&BatchKernel::Portable));
+    assert_eq!(
+        kernels.contains(&BatchKernel::Avx512),
+        BatchKernel::detect() == BatchKernel::Avx512
+    );
+    for variant in ArtVariant::all() {
+        for (symbols, mutant) in [
+            (2usize, ArtMutant::None),
+            (256, ArtMutant::None),
+            (1024, ArtMutant::None),
+            (256, ArtMutant::NeverDescends),
+            (256, ArtMutant::StuckCodeBit),
+        ] {
+            let art = ArtOwen::with_mutant(variant, symbols, 11, mutant).unwrap();
+            for &kernel in &kernels {
+                let s = art.with_kernel(kernel).expect("an available kernel");
+                let label = format!("{} table {symbols} {mutant:?} {kernel:?}", variant.name());
+                assert_batch_equals_scalar(&s, &art, &label);
+            }
+        }
+    }
+}
+
+#[test]
+fn the_digit_loop_equals_the_step_tables_on_every_width() {
+    // The scalar path's step tables against the plain digit-by-digit loop: the batch tables
+    // are built from the same steps, so this anchors both.
+    for variant in ArtVariant::all() {
+        let art = ArtOwen::new(variant, 256, 5).unwrap();
+        for bits in [3u32, 7, 16, 29, 32, 40, 64] {
+            let width = Width::new(bits).unwrap();
+            for x in words(9, 50) {
+                let x = x & width.mask();
+                assert_eq!(
+                    art.scramble(x, width, 3),
+                    art.scramble_digit_by_digit(x, width, 3),
+                    "{} width {bits}",
+                    variant.name()
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn hash_batches_equal_their_scalar_paths() {
+    for flavor in [LkFlavor::Classic, LkFlavor::Improved] {
+        let s = LkHash::new(flavor, 3);
+        assert_batch_equals_scalar(&s, &s.clone(), &format!("{flavor:?}"));
+    }
+    let s = PerBitOwen::new(3);
+    assert_batch_equals_scalar(&s, &s.clone(), "per-bit");
+}
+
+#[test]
+fn a_kernel_is_only_offered_where_it_runs() {
+    let art = ArtOwen::new(ArtVariant::ArtOwen2, 256, 1).unwrap();
+    assert!(art.with_kernel(BatchKernel::Portable).is_some());
+    assert_eq!(
+        art.with_kernel(BatchKernel::Avx512).is_some(),
+        BatchKernel::available().contains(&BatchKernel::Avx512)
+    );
+}
