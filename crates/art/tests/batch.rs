@@ -110,3 +110,53 @@ fn a_kernel_is_only_offered_where_it_runs() {
         BatchKernel::available().contains(&BatchKernel::Avx512)
     );
 }
+
+#[test]
+fn with_kernel_really_switches_the_kernel() {
+    let art = ArtOwen::new(ArtVariant::ArtOwen2, 256, 1).unwrap();
+    for kernel in BatchKernel::available() {
+        assert_eq!(art.with_kernel(kernel).unwrap().kernel(), kernel);
+    }
+    assert_eq!(art.kernel(), BatchKernel::detect());
+}
+
+#[test]
+fn batch_steps_are_as_wide_as_the_table_budget_allows() {
+    // The rule: m = ⌊8/q⌋ digits per step (at least 1), reduced while symbols · 2^(q·m) · 8
+    // bytes exceed BATCH_TABLE_BYTES; the table holds exactly symbols · 2^(q·m) entries.
+    use gartowen_art::BATCH_TABLE_BYTES;
+    for variant in ArtVariant::all() {
+        let q = variant.q();
+        for symbols in [2usize, 256, 1024] {
+            let art = ArtOwen::new(variant, symbols, 1).unwrap();
+            let n = art.grammar().symbols() as usize;
+            let mut m = (8 / q).max(1);
+            while m > 1 && (n << (q * m)) * 8 > BATCH_TABLE_BYTES {
+                m -= 1;
+            }
+            assert_eq!(
+                art.batch_step_bits(),
+                q * m,
+                "{} with {n} symbols",
+                variant.name()
+            );
+            assert!(m == 1 || (n << (q * m)) * 8 <= BATCH_TABLE_BYTES);
+        }
+    }
+}
+
+#[test]
+fn large_tables_take_narrow_steps_and_still_equal_the_scalar_path() {
+    // 16,384 and 65,536 symbols push binary and base-4 tables down to 1- to 4-bit steps.
+    for variant in [ArtVariant::ArtOwen2, ArtVariant::QArt4] {
+        for symbols in [16_384usize, 65_536] {
+            let art = ArtOwen::new(variant, symbols, 3).unwrap();
+            assert!(art.batch_step_bits() <= 4, "{}", art.batch_step_bits());
+            for kernel in BatchKernel::available() {
+                let s = art.with_kernel(kernel).unwrap();
+                let label = format!("{} table {symbols} {kernel:?}", variant.name());
+                assert_batch_equals_scalar(&s, &art, &label);
+            }
+        }
+    }
+}

@@ -117,6 +117,21 @@ impl BatchKernel {
 }
 
 impl ArtOwen {
+    /// The kernel that walks this scrambler's batch path.
+    pub fn kernel(&self) -> BatchKernel {
+        self.kernel
+    }
+
+    /// Bits per step of the batch path's table for words of at most 32 bits (0 when the
+    /// alphabet is too large for it and the split tables serve every width).
+    pub fn batch_step_bits(&self) -> u32 {
+        if self.batch_table.is_empty() {
+            0
+        } else {
+            self.q() * self.batch_digits
+        }
+    }
+
     /// This scrambler with its batch path walked by `kernel` (for tests and benchmarks; the
     /// default is [`BatchKernel::detect`]). Returns `None` when this CPU cannot run it.
     pub fn with_kernel(&self, kernel: BatchKernel) -> Option<ArtOwen> {

@@ -199,9 +199,16 @@ impl ArtOwen {
         art.step_carry = steps.iter().map(|e| e.carry).collect();
         if art.grammar.symbols() <= 1 << 16 {
             art.batch_digits = batch::batch_digits(variant.q(), art.grammar.symbols());
-            art.batch_table = batch::pack(
-                &art.build_steps(art.batch_digits),
-                art.batch_digits * variant.q(),
+            let step_bits = art.batch_digits * variant.q();
+            art.batch_table = batch::pack(&art.build_steps(art.batch_digits), step_bits);
+            // The invariant the gather kernel's safety rests on (see `simd`): every index
+            // (symbol << step bits | digits) and every symbol read lies inside its table.
+            let symbols = art.grammar.symbols() as u64;
+            assert!(
+                art.batch_table.len() == (symbols as usize) << step_bits
+                    && art.codes.len() == symbols as usize
+                    && art.batch_table.iter().all(|e| e & 0xFFFF < symbols),
+                "batch table out of shape"
             );
         }
         Ok(art)
