@@ -2,7 +2,8 @@
 //! path, bit for bit, for every registry entry (the oracle in every base and law, ART tables
 //! small and large), at every width an entry supports from a list that covers partial tail
 //! digits, word counts that leave a remainder after the interleaved lanes, and dimensions
-//! inside and outside the ART's cached root range.
+//! inside and outside the ART's cached root range. Every ART batch kernel (portable and
+//! SIMD) against the scalar path is tested in `crates/art/tests/batch.rs`.
 
 use gartowen::core::{BuildContext, PowerOfTwoBase, Scrambler, SplitMix64, Width};
 
@@ -101,43 +102,6 @@ fn batch_covers_every_word_of_small_widths() {
             s.scramble_batch(&mut batch, width, 1);
             let scalar: Vec<u64> = words.iter().map(|&x| s.scramble(x, width, 1)).collect();
             assert_eq!(batch, scalar, "{request} at {bits} bits");
-        }
-    }
-}
-
-#[test]
-fn every_art_batch_kernel_equals_the_scalar_path() {
-    use gartowen::art::{ArtMutant, ArtOwen, ArtVariant, BatchKernel};
-    let kernels = BatchKernel::available();
-    assert!(kernels.contains(&BatchKernel::Portable));
-    let mut rng = SplitMix64::new(7);
-    // Lengths that leave remainders after the 64-word SIMD blocks and the 8-word lanes.
-    let words: Vec<u64> = (0..64 * 3 + 8 * 2 + 5).map(|_| rng.next_u64()).collect();
-    for variant in ArtVariant::all() {
-        for (symbols, mutant) in [
-            (2usize, ArtMutant::None),
-            (256, ArtMutant::None),
-            (1024, ArtMutant::None),
-            (256, ArtMutant::NeverDescends),
-        ] {
-            let art = ArtOwen::with_mutant(variant, symbols, 11, mutant).unwrap();
-            for &kernel in &kernels {
-                let s = art.with_kernel(kernel).expect("an available kernel");
-                for bits in [5u32, 8, 13, 24, 30, 31, 32, 33, 64] {
-                    let width = Width::new(bits).unwrap();
-                    let mut batch: Vec<u64> = words.iter().map(|&w| w & width.mask()).collect();
-                    let input = batch.clone();
-                    s.scramble_batch(&mut batch, width, 4);
-                    for (&x, &y) in input.iter().zip(&batch) {
-                        assert_eq!(
-                            y,
-                            art.scramble(x, width, 4),
-                            "{} table {symbols} {mutant:?} {kernel:?} width {bits} word {x:#x}",
-                            variant.name()
-                        );
-                    }
-                }
-            }
         }
     }
 }

@@ -318,3 +318,36 @@ fn a_signal_removes_the_temporary_output() {
         assert!(!target.exists(), "{signal}: a partial target");
     }
 }
+
+#[test]
+fn the_output_format_follows_the_extension_unless_given() {
+    // -o x.npy without --format writes .npy (the same bytes as --format npy), x.csv writes
+    // CSV, an unknown extension writes hex, and --format overrides the extension.
+    let dir = tempfile::tempdir().unwrap();
+    let path = |name: &str| dir.path().join(name).to_str().unwrap().to_string();
+    let base = ["generate", "--seq", "sobol", "--dims", "2", "--n", "8"];
+    let run = |extra: &[&str]| {
+        let mut args: Vec<&str> = base.to_vec();
+        args.extend_from_slice(extra);
+        assert!(gartowen(&args).status.success(), "{args:?}");
+    };
+    let (inferred, explicit) = (path("a.npy"), path("b.out"));
+    run(&["-o", &inferred]);
+    run(&["--format", "npy", "-o", &explicit]);
+    let bytes = std::fs::read(&inferred).unwrap();
+    assert_eq!(&bytes[..6], b"\x93NUMPY");
+    assert_eq!(bytes, std::fs::read(&explicit).unwrap());
+    let csv = path("c.csv");
+    run(&["-o", &csv]);
+    let text = std::fs::read_to_string(&csv).unwrap();
+    assert_eq!(text.lines().count(), 8);
+    assert!(text.lines().all(|l| l.split(',').count() == 2));
+    let (hex, forced) = (path("d.dat"), path("e.npy"));
+    run(&["-o", &hex]);
+    run(&["--format", "hex", "-o", &forced]);
+    let hex_text = std::fs::read_to_string(&hex).unwrap();
+    assert_eq!(hex_text, std::fs::read_to_string(&forced).unwrap());
+    assert!(hex_text
+        .lines()
+        .all(|l| l.split_whitespace().all(|w| w.len() == 8)));
+}

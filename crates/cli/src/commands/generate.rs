@@ -34,7 +34,7 @@ pub enum OrderArg {
 ///
 /// Examples:
 ///   gartowen generate --seq sobol --dims 2 --log2-n 4 --format hex
-///   gartowen generate --seq sz16 --dims 16 --n 4096 --format npy -o sz16.npy
+///   gartowen generate --seq sz16 --dims 16 --n 4096 -o sz16.npy   (npy from the extension)
 ///   gartowen generate --seq sobol --dims 3 --n 8 --order gray --format csv   (scipy's rows)
 ///   gartowen generate --seq sz16 --dims 16 --log2-n 8 --scramble owen-oracle --seed 7
 ///   gartowen generate --seq sobol --dims 2 --log2-n 8 --scramble owen-oracle:xor --scramble-base 4
@@ -59,9 +59,9 @@ pub struct GenerateArgs {
     /// Word width W: 32 or 64 bits.
     #[arg(long, default_value_t = 32)]
     pub bits: u32,
-    /// Output format.
-    #[arg(long, value_enum, default_value_t = PointFormat::Hex)]
-    pub format: PointFormat,
+    /// Output format (default: from the extension of -o, .npy/.csv/.hex/.txt; hex otherwise).
+    #[arg(long, value_enum)]
+    pub format: Option<PointFormat>,
     /// Write words (uint32/uint64) instead of float64 values (npy and csv).
     #[arg(long)]
     pub words: bool,
@@ -257,18 +257,32 @@ pub fn write_text(
     })
 }
 
+/// The point format a file name's extension names, if any.
+pub fn format_of(path: &std::path::Path) -> Option<PointFormat> {
+    match path.extension().and_then(|e| e.to_str()) {
+        Some("npy") => Some(PointFormat::Npy),
+        Some("csv") => Some(PointFormat::Csv),
+        Some("hex") | Some("txt") => Some(PointFormat::Hex),
+        _ => None,
+    }
+}
+
 /// Runs `generate`.
 pub fn run(a: GenerateArgs) -> Result<ExitCode, CliError> {
     let p = plan(&a)?;
-    if a.words && a.format == PointFormat::Hex {
+    let format = a
+        .format
+        .or_else(|| a.output.as_deref().and_then(format_of))
+        .unwrap_or(PointFormat::Hex);
+    if a.words && format == PointFormat::Hex {
         return Err(CliError::Usage(
             "--words applies to npy and csv; hex is always words".into(),
         ));
     }
     let src = rows(&p, a.order);
-    write_atomically(a.output.as_deref(), |out| match a.format {
+    write_atomically(a.output.as_deref(), |out| match format {
         PointFormat::Npy => write_npy(&src, a.words, out),
-        PointFormat::Csv | PointFormat::Hex => write_text(&src, a.format, a.words, out),
+        PointFormat::Csv | PointFormat::Hex => write_text(&src, format, a.words, out),
     })?;
     Ok(ExitCode::SUCCESS)
 }

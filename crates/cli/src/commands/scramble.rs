@@ -1,6 +1,6 @@
 //! `gartowen scramble`: scramble the user's own points or words with a registry scrambler.
 
-use super::generate::{write_npy, write_text, PointFormat, RowSource};
+use super::generate::{format_of, write_npy, write_text, PointFormat, RowSource};
 use crate::input::{read_points, InputFormat};
 use crate::output::write_atomically;
 use crate::CliError;
@@ -45,15 +45,6 @@ pub struct ScrambleArgs {
     /// Output file (default: standard output). Written atomically.
     #[arg(short = 'o', long)]
     pub output: Option<PathBuf>,
-}
-
-fn format_of(path: &std::path::Path) -> Option<PointFormat> {
-    match path.extension().and_then(|e| e.to_str()) {
-        Some("npy") => Some(PointFormat::Npy),
-        Some("csv") => Some(PointFormat::Csv),
-        Some("hex") | Some("txt") => Some(PointFormat::Hex),
-        _ => None,
-    }
 }
 
 /// Runs `scramble`.
