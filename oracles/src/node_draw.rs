@@ -116,10 +116,8 @@ fn follow(pos: u32, i: u32, j: u32) -> u32 {
 }
 
 /// The image of `d` under the uniform permutation of `N` ≤ 16 symbols keyed by `key`, equal
-/// to following `d` through [`uniform_swaps`]; each index j is computed from the accepted word
-/// on its own, as the last mixed-radix digit of ⌊r·P / 2^64⌋ with P = N·(N−1)⋯(i+1) (the
-/// nested-floor identity behind [`mixed_radix_draw`]), so the multiplies do not wait on each
-/// other and the constant divisors compile to multiplies.
+/// to following `d` through [`uniform_swaps`]: [`mixed_radix_draw`] on 64-bit words with the
+/// constants of `N` folded in (factorial, threshold, loop bounds).
 #[inline(always)]
 pub(crate) fn uniform_image_small<const N: u32>(key: u64, d: u32) -> u32 {
     let total = FACTORIALS[N as usize] as u128;
@@ -273,6 +271,24 @@ mod tests {
             );
             assert_eq!(rejected, 4096 % total, "n = {n}: rejections");
         }
+    }
+
+    #[test]
+    fn the_compile_time_tables_hold_n_factorial_and_2_to_the_64_mod_it() {
+        let mut f = 1u128;
+        for n in 1..=16u32 {
+            f *= n as u128;
+            assert_eq!(FACTORIALS[n as usize] as u128, f, "{n}!");
+            assert_eq!(
+                THRESHOLDS_64[n as usize] as u128,
+                (1u128 << 64) % f,
+                "2^64 mod {n}!"
+            );
+        }
+        assert_eq!(FACTORIALS[0], 1);
+        // Key 0 is rejected for every n ≥ 3 (0 · n! mod 2^64 = 0 < threshold), so the
+        // following test exercises the redraw from the node's stream.
+        assert!((3..=16).all(|n| THRESHOLDS_64[n] > 0));
     }
 
     #[test]
