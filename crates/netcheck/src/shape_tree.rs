@@ -101,10 +101,7 @@ impl ShapeWalk<'_> {
                     self.record(f, found);
                 }
             } else {
-                // The least shape below this node puts the rest in the last dimension.
-                let mut least = child.clone();
-                least[dims - 1] += self.k - sum - v;
-                if self.skip(&least, found) {
+                if self.skip(&least_completion(&child, self.k), found) {
                     return;
                 }
                 let extended = self.extend_all(keys, p, v);
@@ -243,6 +240,18 @@ impl ShapeWalk<'_> {
     }
 }
 
+/// The lexicographically least shape with Σd = k that extends the partial shape `partial`
+/// (whose parts after its last nonzero one are free): the rest of k in the last dimension. The
+/// first-failure search skips a subtree when this is already after the best failure.
+fn least_completion(partial: &[u32], k: u32) -> Vec<u32> {
+    let mut least = partial.to_vec();
+    let sum: u32 = partial.iter().sum();
+    if let Some(last) = least.last_mut() {
+        *last += k - sum;
+    }
+    least
+}
+
 /// Sets bit (a << shift) | (x >> cut) of `bits` for every pair of `parent` and `digits`.
 fn set_key_bits(parent: &[u32], digits: &[u32], shift: u32, cut: u32, bits: &mut [u32]) {
     #[cfg(target_arch = "x86_64")]
@@ -267,6 +276,42 @@ fn set_key_bits_portable(parent: &[u32], digits: &[u32], shift: u32, cut: u32, b
         }
         for &key in keys.iter() {
             bits[(key >> 5) as usize] |= 1u32 << (key & 31);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::least_completion;
+
+    #[test]
+    fn the_least_completion_is_the_least_of_all_completions() {
+        // Brute force: every shape of Σd = k over 4 dimensions that agrees with a partial
+        // shape up to its last nonzero part; the least in lexicographic order must be ours.
+        let k = 4u32;
+        let all: Vec<Vec<u32>> = (0..5u32.pow(4))
+            .map(|c| {
+                (0..4)
+                    .map(|j| (c / 5u32.pow(3 - j)) % 5)
+                    .collect::<Vec<u32>>()
+            })
+            .filter(|s: &Vec<u32>| s.iter().sum::<u32>() == k)
+            .collect();
+        for partial in &all {
+            for cut in 0..4 {
+                // The partial shape: the first `cut + 1` parts, zeros after (sum ≤ k).
+                let mut p = partial.clone();
+                p[cut + 1..].iter_mut().for_each(|d| *d = 0);
+                if p[cut] == 0 {
+                    continue;
+                }
+                let least = all
+                    .iter()
+                    .filter(|s| s[..=cut] == p[..=cut])
+                    .min()
+                    .expect("the partial shape extends");
+                assert_eq!(&least_completion(&p, k), least, "{p:?}");
+            }
         }
     }
 }

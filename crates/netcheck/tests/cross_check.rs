@@ -261,6 +261,24 @@ proptest! {
     }
 }
 
+/// The 2-D Hammersley set in base b with b^m points, as 32-bit words ⌈v · 2^32⌉.
+fn hammersley(b: u64, m: u32) -> PointSet {
+    let n = b.pow(m);
+    let word = |num: u64, den: u64| ((num << 32).div_ceil(den)).min(u32::MAX as u64);
+    let x: Vec<u64> = (0..n).map(|i| word(i, n)).collect();
+    let y: Vec<u64> = (0..n)
+        .map(|i| {
+            let (mut rev, mut rest) = (0u64, i);
+            for _ in 0..m {
+                rev = rev * b + rest % b;
+                rest /= b;
+            }
+            word(rev, n)
+        })
+        .collect();
+    PointSet::from_columns(Width::W32, vec![x, y]).unwrap()
+}
+
 #[test]
 fn the_shape_tree_walk_equals_the_per_shape_path_report_for_report() {
     // Two paths to every net verdict: the tree walk (incremental keys, parallel, early exit,
@@ -308,6 +326,15 @@ fn the_shape_tree_walk_equals_the_per_shape_path_report_for_report() {
         )
         .unwrap();
         let mut sets = vec![random];
+        if dims == 3 || dims == 4 {
+            // Base 3 and 5: the Hammersley (0,m,2)-net (i/b^m, radical inverse of i), words
+            // rounded up so that floor(x · b^k) is exact; with a moved point as well.
+            let net = hammersley(b, m);
+            let mut moved = net.clone();
+            moved.set(n / 2, 1, net.column(1)[n / 3]);
+            sets.push(net);
+            sets.push(moved);
+        }
         if let Some(net) = net {
             let mut moved = net.clone();
             let (i, j) = (
@@ -319,6 +346,13 @@ fn the_shape_tree_walk_equals_the_per_shape_path_report_for_report() {
             sets.push(moved);
         }
         for set in &sets {
+            if set.dims() == 2 && b % 2 == 1 && set == &sets[1] {
+                // The Hammersley set is a (0, m, 2)-net: the walk must reach its two-part leaves.
+                assert!(
+                    check_net(set, base, m, 0).unwrap().holds,
+                    "Hammersley base {b}"
+                );
+            }
             for t in 0..=m.min(3) {
                 let fast = check_net(set, base, m, t).unwrap();
                 let plain = check_net_per_shape(set, base, m, t).unwrap();
