@@ -1,7 +1,7 @@
 //! The counting path: per shape, every point's box key from its top digits, histogrammed.
 //!
-//! Digit prefixes are computed once per query: P_j[i] = floor(x_ij · b^K) at the deepest level
-//! K the query needs; a shape's digit a_j = floor(x_ij · b^(d_j)) is then P_j[i] / b^(K − d_j)
+//! Digit prefixes are computed once per query: P_j(i) = floor(x_ij · b^K) at the deepest level
+//! K the query needs; a shape's digit a_j = floor(x_ij · b^(d_j)) is then P_j(i) / b^(K − d_j)
 //! (a shift for b = 2^q). A box must hold exactly b^t points. Since the total is b^K · b^t,
 //! no box can hold fewer unless another holds more, so only overflow is searched for.
 

@@ -285,7 +285,7 @@ mod tests {
     use super::least_completion;
 
     #[test]
-    fn the_least_completion_is_the_least_of_all_completions() {
+    fn the_least_completion_of_a_partial_shape_is_the_least_of_all() {
         // Brute force: every shape of Σd = k over 4 dimensions that agrees with a partial
         // shape up to its last nonzero part; the least in lexicographic order must be ours.
         let k = 4u32;
