@@ -134,43 +134,22 @@ impl ShapeWalk<'_> {
         }
     }
 
-    /// Keys of the parent extended by part `v` in dimension `p`, for points start..+len.
-    #[inline]
+    /// Keys of the parent extended by part `v` in dimension `p`, for points start..+len
+    /// (the empty shape's keys are 0). Always inlined, so the t = 0 pass builds its keys with
+    /// the vector width it was compiled for.
+    #[inline(always)]
     fn extend(&self, parent: Option<&[u32]>, p: usize, v: u32, start: usize, out: &mut [u32]) {
         let digits = &self.prefix[p][start..start + out.len()];
+        let parent = parent.map(|parent| &parent[start..start + out.len()]);
         match self.base.log2() {
             Some(q) => {
                 let (cut, shift) = (q * (self.depth - v), q * v);
-                match parent {
-                    Some(parent) => {
-                        let parent = &parent[start..start + out.len()];
-                        for ((o, &a), &x) in out.iter_mut().zip(parent).zip(digits) {
-                            *o = (a << shift) | (x >> cut);
-                        }
-                    }
-                    None => {
-                        for (o, &x) in out.iter_mut().zip(digits) {
-                            *o = x >> cut;
-                        }
-                    }
-                }
+                extend_with(parent, digits, out, |a, x| (a << shift) | (x >> cut));
             }
             None => {
                 let cut = self.base.pow(self.depth - v).expect("validated") as u32;
                 let place = self.base.pow(v).expect("validated") as u32;
-                match parent {
-                    Some(parent) => {
-                        let parent = &parent[start..start + out.len()];
-                        for ((o, &a), &x) in out.iter_mut().zip(parent).zip(digits) {
-                            *o = a * place + x / cut;
-                        }
-                    }
-                    None => {
-                        for (o, &x) in out.iter_mut().zip(digits) {
-                            *o = x / cut;
-                        }
-                    }
-                }
+                extend_with(parent, digits, out, |a, x| a * place + x / cut);
             }
         }
     }
@@ -181,20 +160,13 @@ impl ShapeWalk<'_> {
     /// decides. Keys are built a chunk at a time (vectorized) and the bit loop is compiled
     /// with BMI2 where the CPU has it. Says only yes or no; a `false` is described by the
     /// general check.
-    fn distinct_keys(
-        &self,
-        parent: &[u32],
-        p: usize,
-        shift: u32,
-        cut: u32,
-        bits: &mut Vec<u32>,
-    ) -> bool {
+    fn distinct_keys(&self, parent: &[u32], p: usize, v: u32, bits: &mut Vec<u32>) -> bool {
         let cells = self.base.pow(self.k).expect("validated") as usize;
         bits.clear();
         bits.resize(cells.div_ceil(32), 0);
-        let digits = &self.prefix[p][..self.n];
-        let parent = &parent[..self.n];
-        set_key_bits(parent, digits, shift, cut, bits);
+        set_key_bits(self.n, bits, |start, keys| {
+            self.extend(Some(parent), p, v, start, keys)
+        });
         bits.iter().map(|w| w.count_ones() as u64).sum::<u64>() == self.n as u64
     }
 
@@ -211,10 +183,10 @@ impl ShapeWalk<'_> {
     fn leaf(&self, parent: Option<&[u32]>, p: usize, v: u32, shape: &[u32]) -> Option<BoxFailure> {
         SCRATCH.with(|scratch| {
             let mut scratch = scratch.borrow_mut();
-            if let (1, Some(q), Some(parent), true) =
-                (self.t_count, self.base.log2(), parent, v > 0)
+            if let (1, true, Some(parent), true) =
+                (self.t_count, self.base.log2().is_some(), parent, v > 0)
             {
-                if self.distinct_keys(parent, p, q * v, q * (self.depth - v), &mut scratch) {
+                if self.distinct_keys(parent, p, v, &mut scratch) {
                     return None;
                 }
                 // A collision: the general check below finds and describes the first one.
@@ -252,28 +224,50 @@ fn least_completion(partial: &[u32], k: u32) -> Vec<u32> {
     least
 }
 
-/// Sets bit (a << shift) | (x >> cut) of `bits` for every pair of `parent` and `digits`.
-fn set_key_bits(parent: &[u32], digits: &[u32], shift: u32, cut: u32, bits: &mut [u32]) {
+/// `out[i] = f(parent[i], digits[i])`, with parent keys 0 for the empty shape: one branch-free
+/// loop per case, so the compiler vectorizes each.
+#[inline(always)]
+fn extend_with(
+    parent: Option<&[u32]>,
+    digits: &[u32],
+    out: &mut [u32],
+    f: impl Fn(u32, u32) -> u32,
+) {
+    match parent {
+        Some(parent) => {
+            for ((o, &a), &x) in out.iter_mut().zip(parent).zip(digits) {
+                *o = f(a, x);
+            }
+        }
+        None => {
+            for (o, &x) in out.iter_mut().zip(digits) {
+                *o = f(0, x);
+            }
+        }
+    }
+}
+
+/// Sets the bit of every key of points 0..n in `bits`, the keys written a chunk at a time by
+/// `fill(start, keys)`; compiled once more with AVX2 and BMI2, taken when the CPU has them.
+fn set_key_bits(n: usize, bits: &mut [u32], fill: impl Fn(usize, &mut [u32])) {
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("bmi2") {
         #[target_feature(enable = "avx2,bmi2")]
-        fn wide(parent: &[u32], digits: &[u32], shift: u32, cut: u32, bits: &mut [u32]) {
-            set_key_bits_portable(parent, digits, shift, cut, bits)
+        fn wide(n: usize, bits: &mut [u32], fill: impl Fn(usize, &mut [u32])) {
+            set_key_bits_portable(n, bits, fill)
         }
         // SAFETY: AVX2 and BMI2 were detected on this CPU just above.
-        return unsafe { wide(parent, digits, shift, cut, bits) };
+        return unsafe { wide(n, bits, fill) };
     }
-    set_key_bits_portable(parent, digits, shift, cut, bits)
+    set_key_bits_portable(n, bits, fill)
 }
 
 #[inline(always)]
-fn set_key_bits_portable(parent: &[u32], digits: &[u32], shift: u32, cut: u32, bits: &mut [u32]) {
+fn set_key_bits_portable(n: usize, bits: &mut [u32], fill: impl Fn(usize, &mut [u32])) {
     let mut keys = [0u32; CHUNK];
-    for (a, x) in parent.chunks(CHUNK).zip(digits.chunks(CHUNK)) {
-        let keys = &mut keys[..a.len()];
-        for ((k, &a), &x) in keys.iter_mut().zip(a).zip(x) {
-            *k = (a << shift) | (x >> cut);
-        }
+    for start in (0..n).step_by(CHUNK) {
+        let keys = &mut keys[..CHUNK.min(n - start)];
+        fill(start, keys);
         for &key in keys.iter() {
             bits[(key >> 5) as usize] |= 1u32 << (key & 31);
         }
