@@ -8,6 +8,8 @@
 //! * [`pair_lemma`]: Owen's pair lemma, end to end;
 //! * [`dimensions`]: distinct and independent dimensions.
 //!
+//! [`word_sweep`] checks bijectivity and nestedness on every word of a dimension (W ≤ 32).
+//!
 //! [`laws`] runs the law families on a candidate, [`stats`] holds the tests' distributions,
 //! [`external`] speaks to external programs, and [`certificate`] is the JSON envelope.
 
@@ -23,5 +25,6 @@ pub mod marginal;
 pub mod pair_lemma;
 pub mod sampling;
 pub mod stats;
+pub mod word_sweep;
 
 pub use gartowen_core::{Claim, NodeGroup};

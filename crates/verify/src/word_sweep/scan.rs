@@ -1,0 +1,437 @@
+//! The streaming pass over a range of chunks: frames of consecutive words through the batch
+//! path, the consecutive-pair nestedness test, a per-chunk bitmap for injectivity, and the node
+//! laws of the depths below the chunk's.
+
+use super::{SweepError, SweepFailure, SweepPlan};
+use gartowen_core::Scrambler;
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+use std::ops::Range;
+use std::sync::atomic::{AtomicU64, Ordering};
+
+/// Words per evaluation frame: the external protocol's largest request.
+const FRAME: usize = 1 << 20;
+
+/// The result of sweeping a contiguous range of chunks of one dimension: what [`super::combine`]
+/// needs to join it with the pieces around it.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+pub struct SweepPiece {
+    /// Word width W.
+    pub width: u32,
+    /// Base b.
+    pub base: u32,
+    /// Dimension.
+    pub dim: u32,
+    /// The chunk range [start, end) this piece covers.
+    pub chunks: [u64; 2],
+    /// Words checked (whole chunks up to the first failure).
+    pub words: u64,
+    /// Image prefix π(c) of each chunk checked, in chunk order (d digits as an integer).
+    pub images: Vec<u64>,
+    /// Output of the piece's first word.
+    pub first_output: u64,
+    /// Output of the piece's last word (of the last chunk checked).
+    pub last_output: u64,
+    /// The first failure in word order, if any.
+    pub failure: Option<SweepFailure>,
+    /// Node-law cell counts for depths d..L (one sparse list of (cell, count) per depth).
+    pub node_cells: Vec<Vec<(u32, u64)>>,
+}
+
+/// The cell of a node permutation given by its digit images, as the inspector's `NodeLaw`
+/// numbers them: the Lehmer rank for b ≤ 4, else the pair (π(0), π(1)) as π(0)·(b−1) + rank of
+/// π(1) among the other digits. `None` when π(0) = π(1) (not a permutation).
+pub fn node_cell(images: &[u8]) -> Option<u32> {
+    let b = images.len() as u32;
+    if b <= 4 {
+        let mut rank = 0u32;
+        for i in 0..images.len() {
+            let smaller_later = images[i + 1..].iter().filter(|&&v| v < images[i]).count() as u32;
+            rank = rank * (b - i as u32) + smaller_later;
+        }
+        return Some(rank);
+    }
+    let (a, c) = (images[0] as u32, images[1] as u32);
+    if a == c {
+        return None;
+    }
+    Some(a * (b - 1) + if c > a { c - 1 } else { c })
+}
+
+/// Cells of the node law in base `b`: b! for b ≤ 4, else b(b−1).
+pub fn node_cells(b: u32) -> usize {
+    if b <= 4 {
+        (1..=b as usize).product()
+    } else {
+        (b * (b - 1)) as usize
+    }
+}
+
+/// One chunk's record.
+struct ChunkRecord {
+    first: u64,
+    last: u64,
+    failure: Option<SweepFailure>,
+    cells: Vec<Vec<u64>>,
+}
+
+/// Buffers one worker reuses from chunk to chunk.
+struct Scratch {
+    frame32: Vec<u32>,
+    frame64: Vec<u64>,
+    bitmap: Vec<u64>,
+    node: Vec<Vec<u8>>,
+}
+
+impl Scratch {
+    fn new(plan: &SweepPlan) -> Scratch {
+        let frame = FRAME.min(plan.chunk_words() as usize);
+        let laws = (plan.law_depths() - plan.chunk_digits()) as usize;
+        Scratch {
+            frame32: Vec::with_capacity(if plan.width().bits() == 32 { frame } else { 0 }),
+            frame64: Vec::with_capacity(if plan.width().bits() == 32 { 0 } else { frame }),
+            bitmap: vec![0; (plan.chunk_words() as usize).div_ceil(64)],
+            node: vec![vec![0; plan.base().base() as usize]; laws],
+        }
+    }
+}
+
+/// The scan's running state inside one chunk.
+struct ChunkScan<'a> {
+    plan: &'a SweepPlan,
+    free_bits: [u8; 65],
+    low_mask: u64,
+    law_mask: u64,
+    prev: u64,
+    cells: Vec<Vec<u64>>,
+}
+
+impl ChunkScan<'_> {
+    /// Records the node-law digits of child start `x` (output `y`) at depths d..L.
+    #[cold]
+    fn record_law(&mut self, x: u64, y: u64, node: &mut [Vec<u8>]) {
+        let (w, q, d) = (
+            self.plan.width().bits(),
+            self.plan.base().q(),
+            self.plan.chunk_digits(),
+        );
+        let digit_mask = (1u64 << q) - 1;
+        for k in (d..self.plan.law_depths()).rev() {
+            let free = w - q * (k + 1);
+            if x & ((1u64 << free) - 1) != 0 {
+                break;
+            }
+            let e = ((x >> free) & digit_mask) as usize;
+            let images = &mut node[(k - d) as usize];
+            images[e] = ((y >> free) & digit_mask) as u8;
+            if e as u64 == digit_mask {
+                if let Some(cell) = node_cell(images) {
+                    self.cells[(k - d) as usize][cell as usize] += 1;
+                }
+            }
+        }
+    }
+
+    /// Scans the outputs of words `start..start + out.len()`; the first word of the chunk must
+    /// have been handled by the caller (it has no predecessor inside the chunk).
+    #[inline]
+    fn scan<T: Copy + Into<u64>>(
+        &mut self,
+        start: u64,
+        out: &[T],
+        bitmap: &mut [u64],
+        node: &mut [Vec<u8>],
+    ) -> Result<(), (u64, SweepFailure)> {
+        let mask = self.plan.width().mask();
+        for (i, &y) in out.iter().enumerate() {
+            let x = start + i as u64;
+            let y: u64 = y.into();
+            if y > mask {
+                return Err((
+                    x,
+                    SweepFailure::OutOfRange {
+                        input: x,
+                        output: y,
+                    },
+                ));
+            }
+            let free = self.free_bits[x.trailing_zeros() as usize];
+            if (self.prev ^ y) >> free != 0 {
+                let f = self
+                    .plan
+                    .step_failure(x, self.prev, y)
+                    .expect("failed step");
+                return Err((x, f));
+            }
+            self.mark(x, y, bitmap)?;
+            if x & self.law_mask == 0 {
+                self.record_law(x, y, node);
+            }
+            self.prev = y;
+        }
+        Ok(())
+    }
+
+    /// Marks output `y` of input `x` in the chunk's bitmap; a second mark is a collision (the
+    /// other input is found by a rescan, so it is reported as input 0 here).
+    #[inline(always)]
+    fn mark(&self, x: u64, y: u64, bitmap: &mut [u64]) -> Result<(), (u64, SweepFailure)> {
+        let low = y & self.low_mask;
+        let (word, bit) = ((low >> 6) as usize, low & 63);
+        if bitmap[word] >> bit & 1 != 0 {
+            return Err((
+                x,
+                SweepFailure::Collision {
+                    inputs: [0, x],
+                    output: y,
+                },
+            ));
+        }
+        bitmap[word] |= 1 << bit;
+        Ok(())
+    }
+}
+
+/// Evaluates words `start..start + len` into the worker's frame and runs `f` on the outputs.
+fn with_frame<R>(
+    s: &dyn Scrambler,
+    plan: &SweepPlan,
+    dim: u32,
+    start: u64,
+    len: usize,
+    scratch: &mut Scratch,
+    f: impl FnOnce(FrameOut<'_>, &mut [u64], &mut [Vec<u8>]) -> R,
+) -> R {
+    let Scratch {
+        frame32,
+        frame64,
+        bitmap,
+        node,
+    } = scratch;
+    if plan.width().bits() == 32 {
+        frame32.clear();
+        frame32.extend((start..start + len as u64).map(|x| x as u32));
+        s.scramble_batch_u32(frame32, dim);
+        f(FrameOut::U32(frame32), bitmap, node)
+    } else {
+        frame64.clear();
+        frame64.extend(start..start + len as u64);
+        s.scramble_batch(frame64, plan.width(), dim);
+        f(FrameOut::U64(frame64), bitmap, node)
+    }
+}
+
+/// A frame's outputs at their native width.
+enum FrameOut<'a> {
+    U32(&'a [u32]),
+    U64(&'a [u64]),
+}
+
+impl FrameOut<'_> {
+    fn get(&self, i: usize) -> u64 {
+        match self {
+            FrameOut::U32(v) => v[i] as u64,
+            FrameOut::U64(v) => v[i],
+        }
+    }
+    fn position(&self, y: u64) -> Option<usize> {
+        match self {
+            FrameOut::U32(v) => v.iter().position(|&o| o as u64 == y),
+            FrameOut::U64(v) => v.iter().position(|&o| o == y),
+        }
+    }
+}
+
+/// Sweeps chunk `c`.
+fn scan_chunk(
+    s: &dyn Scrambler,
+    plan: &SweepPlan,
+    dim: u32,
+    c: u64,
+    scratch: &mut Scratch,
+    progress: &(dyn Fn(u64) + Sync),
+) -> ChunkRecord {
+    let (w, q, d) = (plan.width().bits(), plan.base().q(), plan.chunk_digits());
+    let laws = plan.law_depths() - d;
+    let mut free_bits = [0u8; 65];
+    for (tz, slot) in free_bits.iter_mut().enumerate().take(w as usize) {
+        *slot = plan.free_bits_after(1u64 << tz) as u8;
+    }
+    let cells = node_cells(plan.base().base());
+    let mut st = ChunkScan {
+        plan,
+        free_bits,
+        low_mask: plan.chunk_words() - 1,
+        // Child starts of depths d..L have their low W − qL bits zero; none when no depth
+        // lies below the chunk's.
+        law_mask: if laws == 0 {
+            u64::MAX
+        } else {
+            (1u64 << (w - q * plan.law_depths())) - 1
+        },
+        prev: 0,
+        cells: vec![vec![0; cells]; laws as usize],
+    };
+    scratch.bitmap.fill(0);
+    let start = plan.chunk_start(c);
+    let total = plan.chunk_words();
+    let mut first = 0;
+    let mut failure = None;
+    let mut done = 0u64;
+    while done < total {
+        let len = (total - done).min(FRAME as u64) as usize;
+        let at = start + done;
+        let result = with_frame(s, plan, dim, at, len, scratch, |out, bitmap, node| {
+            let mut from = 0;
+            if done == 0 {
+                // The chunk's first word: no predecessor inside the chunk (the seam with the
+                // chunk before is checked when records are joined).
+                first = out.get(0);
+                if first > plan.width().mask() {
+                    return Err((
+                        start,
+                        SweepFailure::OutOfRange {
+                            input: start,
+                            output: first,
+                        },
+                    ));
+                }
+                st.mark(start, first, bitmap)?;
+                if laws > 0 {
+                    st.record_law(start, first, node);
+                }
+                st.prev = first;
+                from = 1;
+            }
+            match out {
+                FrameOut::U32(v) => st.scan(at + from as u64, &v[from..], bitmap, node),
+                FrameOut::U64(v) => st.scan(at + from as u64, &v[from..], bitmap, node),
+            }
+        });
+        if let Err((x, f)) = result {
+            failure = Some(match f {
+                SweepFailure::Collision { output, .. } => {
+                    let other = find_input(s, plan, dim, start, x, output, scratch);
+                    SweepFailure::Collision {
+                        inputs: [other, x],
+                        output,
+                    }
+                }
+                f => f,
+            });
+            break;
+        }
+        done += len as u64;
+        progress(len as u64);
+    }
+    ChunkRecord {
+        first,
+        last: st.prev,
+        failure,
+        cells: st.cells,
+    }
+}
+
+/// The first input in `from..before` whose output is `y` (a collision's earlier partner).
+fn find_input(
+    s: &dyn Scrambler,
+    plan: &SweepPlan,
+    dim: u32,
+    from: u64,
+    before: u64,
+    y: u64,
+    scratch: &mut Scratch,
+) -> u64 {
+    let mut at = from;
+    while at < before {
+        let len = (before - at).min(FRAME as u64) as usize;
+        if let Some(i) = with_frame(s, plan, dim, at, len, scratch, |out, _, _| out.position(y)) {
+            return at + i as u64;
+        }
+        at += len as u64;
+    }
+    unreachable!("a collision's partner lies before it in its chunk")
+}
+
+/// Sweeps chunks `chunks` of dimension `dim` of `s` under `plan`, in parallel on the current
+/// rayon pool; `progress` is called with the number of words after each frame. The piece is the
+/// same for any thread count. Scanning stops at the first failure (chunks after a failed one are
+/// not needed to name it).
+pub fn sweep(
+    s: &dyn Scrambler,
+    plan: &SweepPlan,
+    dim: u32,
+    chunks: Range<u64>,
+    progress: &(dyn Fn(u64) + Sync),
+) -> Result<SweepPiece, SweepError> {
+    plan.check_range(&chunks)?;
+    let failed_at = AtomicU64::new(u64::MAX);
+    let indices: Vec<u64> = chunks.clone().collect();
+    let records: Vec<Option<ChunkRecord>> = indices
+        .par_iter()
+        .map_init(
+            || Scratch::new(plan),
+            |scratch, &c| {
+                if c > failed_at.load(Ordering::Relaxed) {
+                    return None;
+                }
+                let r = scan_chunk(s, plan, dim, c, scratch, progress);
+                if r.failure.is_some() {
+                    failed_at.fetch_min(c, Ordering::Relaxed);
+                }
+                Some(r)
+            },
+        )
+        .collect();
+    let cells = node_cells(plan.base().base());
+    let laws = (plan.law_depths() - plan.chunk_digits()) as usize;
+    let mut dense = vec![vec![0u64; cells]; laws];
+    let mut piece = SweepPiece {
+        width: plan.width().bits(),
+        base: plan.base().base(),
+        dim,
+        chunks: [chunks.start, chunks.end],
+        words: 0,
+        images: Vec::new(),
+        first_output: records[0].as_ref().map_or(0, |r| r.first),
+        last_output: 0,
+        failure: None,
+        node_cells: Vec::new(),
+    };
+    let shift = plan.width().bits() - plan.chunk_prefix_bits();
+    for (c, record) in chunks.zip(&records) {
+        // A chunk is skipped only after a failure in an earlier one, which ends this loop.
+        let r = record
+            .as_ref()
+            .expect("chunks before the first failure are scanned");
+        if c > piece.chunks[0] {
+            if let Some(f) = plan.seam_failure(plan.chunk_start(c), piece.last_output, r.first) {
+                piece.failure = Some(f);
+                break;
+            }
+        }
+        if let Some(f) = &r.failure {
+            piece.failure = Some(f.clone());
+            break;
+        }
+        piece.images.push(r.first >> shift);
+        for (sum, add) in dense.iter_mut().zip(&r.cells) {
+            for (a, b) in sum.iter_mut().zip(add) {
+                *a += b;
+            }
+        }
+        piece.words += plan.chunk_words();
+        piece.last_output = r.last;
+    }
+    piece.node_cells = dense
+        .into_iter()
+        .map(|row| {
+            row.into_iter()
+                .enumerate()
+                .filter(|&(_, n)| n > 0)
+                .map(|(cell, n)| (cell as u32, n))
+                .collect()
+        })
+        .collect();
+    Ok(piece)
+}
