@@ -13,10 +13,14 @@ static uint64_t mix64(uint64_t z) {
     return z ^ (z >> 31);
 }
 
+/* Bit reversal by swapping halves, then quarters, ... (five steps instead of a 32-step loop:
+ * the every-word sweep sends 2^32 words per dimension). */
 static uint32_t reverse32(uint32_t v) {
-    uint32_t r = 0;
-    for (int i = 0; i < 32; i++) r |= ((v >> i) & 1u) << (31 - i);
-    return r;
+    v = ((v >> 1) & 0x55555555u) | ((v & 0x55555555u) << 1);
+    v = ((v >> 2) & 0x33333333u) | ((v & 0x33333333u) << 2);
+    v = ((v >> 4) & 0x0F0F0F0Fu) | ((v & 0x0F0F0F0Fu) << 4);
+    v = ((v >> 8) & 0x00FF00FFu) | ((v & 0x00FF00FFu) << 8);
+    return (v >> 16) | (v << 16);
 }
 
 static uint32_t lk(uint32_t x, uint32_t s) {
@@ -43,7 +47,14 @@ static uint64_t scramble(uint64_t x, unsigned width, uint32_t base, uint32_t dim
         fprintf(stderr, "lk_hash: 32-bit words only\n");
         exit(3);
     }
-    uint32_t s = (uint32_t)mix64(mix64(seed) + dim);
+    /* The dimension's key, computed once per (seed, dim) rather than once per word. */
+    static uint64_t cached_seed, cached_dim = UINT64_MAX;
+    static uint32_t s;
+    if (seed != cached_seed || dim != cached_dim) {
+        s = (uint32_t)mix64(mix64(seed) + dim);
+        cached_seed = seed;
+        cached_dim = dim;
+    }
     uint32_t r = reverse32((uint32_t)x);
     return reverse32(improved ? lk_improved(r, s) : lk(r, s));
 }

@@ -294,6 +294,12 @@ pub fn decode_reply(
     width: Width,
     batch: u64,
 ) -> Result<Vec<u64>, ExternalError> {
+    check_reply(bytes, count, width, batch)?;
+    Ok(words_from_le(&bytes[8..], width.bits() as usize / 8))
+}
+
+/// Checks a complete reply's length, magic and count.
+fn check_reply(bytes: &[u8], count: usize, width: Width, batch: u64) -> Result<(), ExternalError> {
     let wb = width.bits() as usize / 8;
     let need = 8 + count * wb;
     if bytes.len() != need {
@@ -319,7 +325,7 @@ pub fn decode_reply(
             detail: format!("reply count {n}, the request had {count}"),
         });
     }
-    Ok(words_from_le(&bytes[8..], wb))
+    Ok(())
 }
 
 /// Little-endian words of `wb` bytes each (a trailing partial word is ignored).
@@ -339,6 +345,8 @@ struct Session {
     stdin: Option<ChildStdin>,
     stdout: Receiver<Vec<u8>>,
     pending: Vec<u8>,
+    /// The request frame of the 32-bit path, reused from request to request.
+    frame: Vec<u8>,
     batches: u64,
     failure: Option<ExternalError>,
 }
@@ -464,6 +472,7 @@ impl ExternalProcess {
                 stdin,
                 stdout: rx,
                 pending: Vec::new(),
+                frame: Vec::new(),
                 batches: 0,
                 failure: None,
             }),
@@ -503,11 +512,72 @@ impl ExternalProcess {
         dim: u32,
         words: &[u64],
     ) -> Result<Vec<u64>, ExternalError> {
-        let mut s = self.session.lock().expect("session");
+        self.with_session(|s| {
+            let frame = encode_request(&self.header(seed, dim), words)?;
+            let need = self.exchange(s, &frame, words.len())?;
+            let out = decode_reply(&s.pending[..need], words.len(), self.width, s.batches);
+            s.pending.clear();
+            out
+        })
+    }
+
+    /// Scrambles 32-bit `words` in place in one request (the session must carry 32-bit words);
+    /// the request frame and the reply buffer are reused, so a long run allocates nothing per
+    /// request.
+    pub fn scramble_batch_u32(
+        &self,
+        seed: u64,
+        dim: u32,
+        words: &mut [u32],
+    ) -> Result<(), ExternalError> {
+        if self.width != Width::W32 || words.is_empty() || words.len() > MAX_BATCH {
+            return Err(ExternalError::BadRequest(format!(
+                "{} 32-bit words for a {}-bit session (1..={MAX_BATCH} allowed)",
+                words.len(),
+                self.width.bits()
+            )));
+        }
+        self.with_session(|s| {
+            let mut frame = std::mem::take(&mut s.frame);
+            frame.clear();
+            frame
+                .extend_from_slice(&encode_request(&self.header(seed, dim), &[0])?[..HEADER_BYTES]);
+            frame[16..20].copy_from_slice(&(words.len() as u32).to_le_bytes());
+            for &w in words.iter() {
+                frame.extend_from_slice(&w.to_le_bytes());
+            }
+            let result = self.exchange(s, &frame, words.len());
+            s.frame = frame;
+            let need = result?;
+            check_reply(&s.pending[..need], words.len(), self.width, s.batches)?;
+            for (w, b) in words.iter_mut().zip(s.pending[8..need].chunks_exact(4)) {
+                *w = u32::from_le_bytes(b.try_into().expect("4 bytes"));
+            }
+            s.pending.clear();
+            Ok(())
+        })
+    }
+
+    fn header(&self, seed: u64, dim: u32) -> RequestHeader {
+        RequestHeader {
+            width: self.width,
+            base: self.base,
+            dim,
+            seed,
+        }
+    }
+
+    /// Runs `f` on the session unless it has failed; a failure of `f` (other than a refused
+    /// request) poisons the session and kills the program.
+    fn with_session<R>(
+        &self,
+        f: impl FnOnce(&mut Session) -> Result<R, ExternalError>,
+    ) -> Result<R, ExternalError> {
+        let mut s = self.session.lock().unwrap_or_else(|e| e.into_inner());
         if let Some(f) = &s.failure {
             return Err(f.clone());
         }
-        let result = self.exchange(&mut s, seed, dim, words);
+        let result = f(&mut s);
         if let Err(e) = &result {
             if !matches!(e, ExternalError::BadRequest(_)) {
                 s.failure = Some(e.clone());
@@ -518,29 +588,23 @@ impl ExternalProcess {
         result
     }
 
+    /// Sends one request frame of `count` words and waits for the whole reply, which then
+    /// starts `s.pending`; returns the reply's length in bytes.
     fn exchange(
         &self,
         s: &mut Session,
-        seed: u64,
-        dim: u32,
-        words: &[u64],
-    ) -> Result<Vec<u64>, ExternalError> {
-        let header = RequestHeader {
-            width: self.width,
-            base: self.base,
-            dim,
-            seed,
-        };
-        let frame = encode_request(&header, words)?;
+        frame: &[u8],
+        count: usize,
+    ) -> Result<usize, ExternalError> {
         s.batches += 1;
         let batch = s.batches;
         let write = s
             .stdin
             .as_mut()
             .expect("open until failure")
-            .write_all(&frame)
+            .write_all(frame)
             .and_then(|_| s.stdin.as_mut().expect("open").flush());
-        let need = 8 + words.len() * self.width.bits() as usize / 8;
+        let need = 8 + count * self.width.bits() as usize / 8;
         // A timeout past what Instant can represent waits "forever" instead of panicking.
         let now = Instant::now();
         let deadline = now
@@ -598,14 +662,13 @@ impl ExternalProcess {
                 }
             }
         }
-        let reply: Vec<u8> = s.pending.drain(..need).collect();
-        if !s.pending.is_empty() {
+        if s.pending.len() > need {
             return Err(ExternalError::Garbage {
                 batch,
-                detail: format!("{} bytes beyond the reply", s.pending.len()),
+                detail: format!("{} bytes beyond the reply", s.pending.len() - need),
             });
         }
-        decode_reply(&reply, words.len(), self.width, batch)
+        Ok(need)
     }
 
     /// The child's exit as an error if it has exited (waiting briefly), else `otherwise`.
@@ -711,6 +774,19 @@ impl Scrambler for ExternalScrambler {
             match self.request(chunk, dim) {
                 Ok(out) => chunk.copy_from_slice(&out),
                 Err(_) => chunk.fill(0),
+            }
+        }
+    }
+    /// Whole frames of up to [`MAX_BATCH`] words in place, without widening to 64 bits (the
+    /// every-word sweep's path); after a failure the words become 0.
+    fn scramble_batch_u32(&self, words: &mut [u32], dim: u32) {
+        for chunk in words.chunks_mut(MAX_BATCH) {
+            if self
+                .process
+                .scramble_batch_u32(self.seed, dim, chunk)
+                .is_err()
+            {
+                chunk.fill(0);
             }
         }
     }

@@ -17,6 +17,7 @@ pub mod battery;
 pub mod certificate;
 pub mod dimensions;
 pub mod external;
+pub mod external_pool;
 pub mod joint;
 pub mod junit;
 pub mod law;

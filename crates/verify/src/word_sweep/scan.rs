@@ -134,8 +134,15 @@ impl ChunkScan<'_> {
 
     /// Scans the outputs of words `start..start + out.len()`; the first word of the chunk must
     /// have been handled by the caller (it has no predecessor inside the chunk).
+    ///
+    /// With `BINARY` (base 2) the bitmap is not used: a nested map is a bijection iff every
+    /// node's two children map to different digits, and the children of node (s, p) meet exactly
+    /// once among consecutive inputs, at x − 1 = p0 1…1 and x = p1 0…0, which share s digits.
+    /// So the outputs of every consecutive pair must share exactly as many digits as the inputs:
+    /// `(f(x−1) ⊕ f(x)) >> (free − 1) == 1`. A failure of that test is only located, not named:
+    /// the caller rescans the chunk with the bitmap to name it as the general scan does.
     #[inline]
-    fn scan<T: Copy + Into<u64>>(
+    fn scan<T: Copy + Into<u64>, const BINARY: bool>(
         &mut self,
         start: u64,
         out: &[T],
@@ -156,14 +163,26 @@ impl ChunkScan<'_> {
                 ));
             }
             let free = self.free_bits[x.trailing_zeros() as usize];
-            if (self.prev ^ y) >> free != 0 {
-                let f = self
-                    .plan
-                    .step_failure(x, self.prev, y)
-                    .expect("failed step");
-                return Err((x, f));
+            if BINARY {
+                if (self.prev ^ y) >> (free - 1) != 1 {
+                    return Err((
+                        x,
+                        SweepFailure::Collision {
+                            inputs: [x - 1, x],
+                            output: y,
+                        },
+                    ));
+                }
+            } else {
+                if (self.prev ^ y) >> free != 0 {
+                    let f = self
+                        .plan
+                        .step_failure(x, self.prev, y)
+                        .expect("failed step");
+                    return Err((x, f));
+                }
+                self.mark(x, y, bitmap)?;
             }
-            self.mark(x, y, bitmap)?;
             if x & self.law_mask == 0 {
                 self.record_law(x, y, node);
             }
@@ -209,13 +228,17 @@ fn with_frame<R>(
         node,
     } = scratch;
     if plan.width().bits() == 32 {
-        frame32.clear();
-        frame32.extend((start..start + len as u64).map(|x| x as u32));
+        frame32.resize(len, 0);
+        for (i, x) in frame32.iter_mut().enumerate() {
+            *x = start as u32 + i as u32;
+        }
         s.scramble_batch_u32(frame32, dim);
         f(FrameOut::U32(frame32), bitmap, node)
     } else {
-        frame64.clear();
-        frame64.extend(start..start + len as u64);
+        frame64.resize(len, 0);
+        for (i, x) in frame64.iter_mut().enumerate() {
+            *x = start + i as u64;
+        }
         s.scramble_batch(frame64, plan.width(), dim);
         f(FrameOut::U64(frame64), bitmap, node)
     }
@@ -242,8 +265,28 @@ impl FrameOut<'_> {
     }
 }
 
-/// Sweeps chunk `c`.
+/// Sweeps chunk `c`: in base 2 by the bitmap-free test, and again with the bitmap when that
+/// finds something, so that failures are named exactly as in the general scan.
 fn scan_chunk(
+    s: &dyn Scrambler,
+    plan: &SweepPlan,
+    dim: u32,
+    c: u64,
+    scratch: &mut Scratch,
+    progress: &(dyn Fn(u64) + Sync),
+) -> ChunkRecord {
+    if plan.base().q() == 1 {
+        let r = scan_chunk_with::<true>(s, plan, dim, c, scratch, progress);
+        if r.failure.is_none() {
+            return r;
+        }
+        return scan_chunk_with::<false>(s, plan, dim, c, scratch, &|_| {});
+    }
+    scan_chunk_with::<false>(s, plan, dim, c, scratch, progress)
+}
+
+/// Sweeps chunk `c` with the binary test or the general one.
+fn scan_chunk_with<const BINARY: bool>(
     s: &dyn Scrambler,
     plan: &SweepPlan,
     dim: u32,
@@ -304,12 +347,18 @@ fn scan_chunk(
                 from = 1;
             }
             match out {
-                FrameOut::U32(v) => st.scan(at + from as u64, &v[from..], bitmap, node),
-                FrameOut::U64(v) => st.scan(at + from as u64, &v[from..], bitmap, node),
+                FrameOut::U32(v) => {
+                    st.scan::<_, BINARY>(at + from as u64, &v[from..], bitmap, node)
+                }
+                FrameOut::U64(v) => {
+                    st.scan::<_, BINARY>(at + from as u64, &v[from..], bitmap, node)
+                }
             }
         });
         if let Err((x, f)) = result {
             failure = Some(match f {
+                // The binary test only locates; the general rescan names.
+                f if BINARY => f,
                 SweepFailure::Collision { output, .. } => {
                     let other = find_input(s, plan, dim, start, x, output, scratch);
                     SweepFailure::Collision {

@@ -1,0 +1,496 @@
+//! `verify --level exhaustive --dims A..B`: the every-word sweep (bijective and nested at every
+//! depth on all 2^32 words of each dimension), sharded by dimension and word range, merged by
+//! `verify --merge` into one certificate.
+
+use super::verify::VerifyArgs;
+use crate::CliError;
+use gartowen::certificate::{CertVerdict, Certificate, InputRecord};
+use gartowen::core::{Claim, PowerOfTwoBase, Scrambler, Width};
+use gartowen::external_pool::ExternalPool;
+use gartowen::verify::Shard;
+use gartowen::word_sweep::{
+    combine, shard_range, split_run, sweep, SweepPiece, SweepPlan, SweepVerdict,
+};
+use serde::{Deserialize, Serialize};
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::sync::Arc;
+use std::time::Instant;
+
+/// Dimensions A..B, both included.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+pub struct DimRange {
+    /// First dimension.
+    pub first: u32,
+    /// Last dimension (included).
+    pub last: u32,
+}
+
+impl DimRange {
+    /// Parses `A..B` (both included) or `A`.
+    pub fn parse(text: &str) -> Result<DimRange, CliError> {
+        let bad = || {
+            CliError::Usage(format!(
+                "--dims '{text}' is not A..B (both included, A ≤ B) or A"
+            ))
+        };
+        let num = |t: &str| t.trim().parse::<u32>().map_err(|_| bad());
+        let (first, last) = match text.split_once("..") {
+            Some((a, b)) => (num(a)?, num(b.strip_prefix('=').unwrap_or(b))?),
+            None => (num(text)?, num(text)?),
+        };
+        if first > last {
+            return Err(bad());
+        }
+        Ok(DimRange { first, last })
+    }
+
+    fn dims(&self) -> impl Iterator<Item = u32> {
+        self.first..=self.last
+    }
+
+    fn count(&self) -> u64 {
+        (self.last - self.first) as u64 + 1
+    }
+
+    fn label(&self) -> String {
+        if self.first == self.last {
+            format!("dimension {}", self.first)
+        } else {
+            format!("dimensions {}..{}", self.first, self.last)
+        }
+    }
+}
+
+/// One implementation to sweep.
+struct Target {
+    name: String,
+    scrambler: Box<dyn Scrambler>,
+    plan: SweepPlan,
+    pool: Option<Arc<ExternalPool>>,
+}
+
+/// What every shard of one sweep shares (the merge refuses anything else).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+struct SweepParameters {
+    dims: DimRange,
+    implementations: Vec<String>,
+    seed: u64,
+    external: Option<serde_json::Value>,
+}
+
+/// A piece with the implementation it belongs to and the time it took.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+struct PieceRecord {
+    implementation: String,
+    seconds: f64,
+    piece: SweepPiece,
+}
+
+/// An implementation's verdicts over the dimensions.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+struct ImplementationVerdict {
+    implementation: String,
+    base: u32,
+    width: u32,
+    passed: bool,
+    statement: String,
+    seconds: f64,
+    dims: Vec<SweepVerdict>,
+}
+
+fn targets(a: &VerifyArgs) -> Result<Vec<Target>, CliError> {
+    if let Some(command) = &a.external {
+        let base = PowerOfTwoBase::from_base(a.base)
+            .map_err(|e| CliError::Usage(format!("--base {}: {e}", a.base)))?;
+        if a.width != 32 {
+            // Refused before anything is started.
+            return Err(CliError::Usage(format!(
+                "--width {}: {}; drop --dims for the sampled checks",
+                a.width,
+                gartowen::word_sweep::SweepError::TooWide(a.width)
+            )));
+        }
+        let claim = if a.no_uniform_claim {
+            Claim::NESTED
+        } else {
+            super::parse_claim(&a.claim)?.unwrap_or(Claim::OWEN)
+        };
+        let instances = rayon::current_num_threads().max(1);
+        let mut processes = Vec::with_capacity(instances);
+        for _ in 0..instances {
+            processes.push(Arc::new(super::spawn_external(
+                command,
+                base,
+                Width::W32,
+                a.timeout,
+            )?));
+        }
+        let pool = Arc::new(ExternalPool::new(processes, a.seed, claim));
+        let plan = SweepPlan::new(Width::W32, base).expect("32 bits");
+        return Ok(vec![Target {
+            name: format!("external:{command}"),
+            scrambler: Box::new(SharedPool(pool.clone())),
+            plan,
+            pool: Some(pool),
+        }]);
+    }
+    let registry = gartowen::registry();
+    let names: Vec<String> = if a.implementations.is_empty() {
+        registry
+            .specs()
+            .iter()
+            .map(|s| s.name.to_string())
+            .collect()
+    } else {
+        a.implementations.clone()
+    };
+    names
+        .iter()
+        .map(|n| {
+            let s = registry.build(n, 0)?;
+            let plan =
+                SweepPlan::for_scrambler(s.as_ref()).map_err(|e| CliError::Usage(e.to_string()))?;
+            Ok(Target {
+                name: s.name(),
+                scrambler: s,
+                plan,
+                pool: None,
+            })
+        })
+        .collect()
+}
+
+/// The pool seen through a box (the target owns a `Box<dyn Scrambler>`).
+struct SharedPool(Arc<ExternalPool>);
+
+impl Scrambler for SharedPool {
+    fn name(&self) -> String {
+        self.0.name()
+    }
+    fn base(&self) -> PowerOfTwoBase {
+        self.0.base()
+    }
+    fn claim(&self) -> Claim {
+        self.0.claim()
+    }
+    fn supports_width(&self, width: Width) -> bool {
+        self.0.supports_width(width)
+    }
+    fn scramble(&self, x: u64, width: Width, dim: u32) -> u64 {
+        self.0.scramble(x, width, dim)
+    }
+    fn scramble_batch(&self, words: &mut [u64], width: Width, dim: u32) {
+        self.0.scramble_batch(words, width, dim)
+    }
+    fn scramble_batch_u32(&self, words: &mut [u32], dim: u32) {
+        self.0.scramble_batch_u32(words, dim)
+    }
+    fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
+        self.0.unscramble(y, width, dim)
+    }
+}
+
+/// Runs the sweep (or this shard's part of it).
+pub fn run(a: &VerifyArgs, dims_text: &str) -> Result<ExitCode, CliError> {
+    if a.level != super::verify::LevelArg::Exhaustive {
+        return Err(CliError::Usage(
+            "--dims runs the every-word sweep, which is --level exhaustive".into(),
+        ));
+    }
+    let dims = DimRange::parse(dims_text)?;
+    let shard = match &a.shard {
+        None => Shard::ALL,
+        Some(t) => Shard::parse(t)
+            .ok_or_else(|| CliError::Usage(format!("--shard '{t}' is not I/N with 1 ≤ I ≤ N")))?,
+    };
+    let targets = targets(a)?;
+    // Units are (implementation, dimension, chunk) in that order; a shard takes a contiguous run.
+    let segments: Vec<u64> = targets
+        .iter()
+        .flat_map(|t| dims.dims().map(move |_| t.plan.chunks()))
+        .collect();
+    let total: u64 = segments.iter().sum();
+    let run = shard_range(total, shard.index as u64, shard.count as u64);
+    let work = split_run(&segments, run);
+    let words: u64 = work
+        .iter()
+        .map(|(seg, r)| (r.end - r.start) * targets[seg / dims.count() as usize].plan.chunk_words())
+        .sum();
+    let bar = indicatif::ProgressBar::new(words);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template(
+            "sweep {msg} [{bar:30}] {percent}% {human_pos}/{human_len} words, {per_sec}, ETA {eta}",
+        )
+        .expect("template"),
+    );
+    let mut records = Vec::new();
+    for (seg, chunks) in work {
+        let t = &targets[seg / dims.count() as usize];
+        let dim = dims.first + (seg as u64 % dims.count()) as u32;
+        bar.set_message(format!("{} dim {dim}", t.name));
+        let start = Instant::now();
+        let piece = sweep(t.scrambler.as_ref(), &t.plan, dim, chunks, &|n| bar.inc(n))
+            .map_err(|e| CliError::Usage(e.to_string()))?;
+        if let Some(e) = t.pool.as_ref().and_then(|p| p.failure()) {
+            bar.finish_and_clear();
+            return Err(CliError::External(e.to_string()));
+        }
+        records.push(PieceRecord {
+            implementation: t.name.clone(),
+            seconds: start.elapsed().as_secs_f64(),
+            piece,
+        });
+    }
+    bar.finish_and_clear();
+    let parameters = SweepParameters {
+        dims,
+        implementations: targets.iter().map(|t| t.name.clone()).collect(),
+        seed: if a.external.is_some() { a.seed } else { 0 },
+        external: a.external.as_ref().map(|c| {
+            serde_json::json!({"command": c, "base": a.base, "width": a.width,
+                               "timeout_seconds": a.timeout})
+        }),
+    };
+    let inputs: Vec<InputRecord> = match &a.external {
+        Some(c) => vec![super::verify::program_record(c)],
+        None => targets
+            .iter()
+            .map(|t| InputRecord {
+                kind: "registry".into(),
+                name: t.name.clone(),
+                checksum_fnv1a64: None,
+                details: serde_json::json!({"base": t.plan.base().base(), "width": t.plan.width().bits()}),
+            })
+            .collect(),
+    };
+    finish(a.json.as_ref(), &parameters, shard, inputs, records)
+}
+
+/// Prints and certifies: the verdicts when the pieces cover everything (one shard of one, or a
+/// merge), else this shard's pieces.
+fn finish(
+    json: Option<&PathBuf>,
+    parameters: &SweepParameters,
+    shard: Shard,
+    inputs: Vec<InputRecord>,
+    records: Vec<PieceRecord>,
+) -> Result<ExitCode, CliError> {
+    let complete = shard.count == 1;
+    let verdicts = if complete {
+        verdicts(parameters, &records)?
+    } else {
+        Vec::new()
+    };
+    let failed = if complete {
+        for v in &verdicts {
+            print_verdict(v)?;
+        }
+        verdicts.iter().filter(|v| !v.passed).count()
+    } else {
+        for r in &records {
+            let p = &r.piece;
+            let what = match &p.failure {
+                None => format!("no failure in {} words", p.words),
+                Some(f) => format!("FAIL {}", f.describe(p.base)),
+            };
+            crate::outln!(
+                "{} dim {} chunks {}..{} of {}: {what} ({:.1} s)",
+                r.implementation,
+                p.dim,
+                p.chunks[0],
+                p.chunks[1],
+                SweepPlan::new(
+                    Width::new(p.width)?,
+                    PowerOfTwoBase::from_base(p.base as u64)?
+                )
+                .map(|plan| plan.chunks())
+                .unwrap_or(0),
+                r.seconds
+            );
+        }
+        crate::outln!(
+            "shard {}/{} of the every-word sweep: combine every shard's --json with verify --merge",
+            shard.index,
+            shard.count
+        );
+        records.iter().filter(|r| r.piece.failure.is_some()).count()
+    };
+    if let Some(path) = json {
+        let cert = Certificate::new(
+            "verify",
+            if failed == 0 {
+                CertVerdict::Pass
+            } else {
+                CertVerdict::Fail
+            },
+            serde_json::json!({
+                "level": "exhaustive",
+                "sweep": parameters,
+                "shard": {"index": shard.index, "count": shard.count},
+            }),
+            vec![parameters.seed],
+            inputs,
+            serde_json::json!({ "pieces": records, "implementations": verdicts }),
+        );
+        crate::output::write_atomically(Some(path), |out| {
+            out.write_all(cert.to_json().as_bytes())
+                .map_err(|e| CliError::Io(e.to_string()))
+        })?;
+    }
+    Ok(ExitCode::from(if failed == 0 {
+        crate::error::EXIT_PASS
+    } else {
+        crate::error::EXIT_FAIL
+    }))
+}
+
+/// Combines the pieces of every implementation and dimension; a missing one is refused.
+fn verdicts(
+    parameters: &SweepParameters,
+    records: &[PieceRecord],
+) -> Result<Vec<ImplementationVerdict>, CliError> {
+    let mut out = Vec::new();
+    for name in &parameters.implementations {
+        let mut dims = Vec::new();
+        let mut seconds = 0.0;
+        for dim in parameters.dims.dims() {
+            let pieces: Vec<SweepPiece> = records
+                .iter()
+                .filter(|r| &r.implementation == name && r.piece.dim == dim)
+                .inspect(|r| seconds += r.seconds)
+                .map(|r| r.piece.clone())
+                .collect();
+            if pieces.is_empty() {
+                return Err(CliError::Usage(format!(
+                    "{name}: dimension {dim} has no pieces: a shard is missing"
+                )));
+            }
+            dims.push(combine(&pieces).map_err(|e| CliError::Usage(format!("{name}: {e}")))?);
+        }
+        let (base, width) = (dims[0].base, dims[0].width);
+        let passed = dims.iter().all(|d| d.passed);
+        let statement = if passed {
+            format!(
+                "bijective and nested on all 2^{width} words, {}, base {base}",
+                parameters.dims.label()
+            )
+        } else {
+            format!(
+                "NOT bijective and nested on all 2^{width} words: {} of {} dimension(s) failed",
+                dims.iter().filter(|d| !d.passed).count(),
+                dims.len()
+            )
+        };
+        out.push(ImplementationVerdict {
+            implementation: name.clone(),
+            base,
+            width,
+            passed,
+            statement,
+            seconds,
+            dims,
+        });
+    }
+    Ok(out)
+}
+
+fn print_verdict(v: &ImplementationVerdict) -> Result<(), CliError> {
+    crate::outln!(
+        "{} (base {}, {}-bit words, {:.1} s)",
+        v.implementation,
+        v.base,
+        v.width,
+        v.seconds
+    );
+    for d in &v.dims {
+        let mark = if d.passed { "pass" } else { "FAIL" };
+        crate::outln!("  {mark} {}", d.statement);
+        if !d.node_laws.is_empty() {
+            let p: Vec<String> = d
+                .node_laws
+                .iter()
+                .map(|l| format!("{:.2}", l.p_value))
+                .collect();
+            crate::outln!(
+                "    node laws by depth 0..{} (measured, χ² p-value against uniform S_{}): {}",
+                d.node_laws.len() - 1,
+                d.base,
+                p.join(" ")
+            );
+        }
+    }
+    crate::outln!("  => {}", v.statement);
+    Ok(())
+}
+
+/// `verify --merge` of sweep shards: the shards 1..N of one sweep, each once, from the same tool
+/// version and parameters; every implementation, dimension and chunk covered exactly once.
+pub fn merge(paths: &[PathBuf], json: Option<&PathBuf>) -> Result<ExitCode, CliError> {
+    let usage = |p: &PathBuf, m: String| CliError::Usage(format!("{}: {m}", p.display()));
+    let mut first: Option<(PathBuf, Certificate, SweepParameters)> = None;
+    let mut seen: Vec<u64> = Vec::new();
+    let mut count = 0u64;
+    let mut records = Vec::new();
+    for p in paths {
+        let text = std::fs::read_to_string(p)
+            .map_err(|e| CliError::Io(format!("cannot read {}: {e}", p.display())))?;
+        let cert = Certificate::parse(&text).map_err(|e| usage(p, e.to_string()))?;
+        let params: SweepParameters = serde_json::from_value(cert.parameters["sweep"].clone())
+            .map_err(|_| {
+                usage(
+                    p,
+                    "not a shard of the every-word sweep (verify --level exhaustive --dims)".into(),
+                )
+            })?;
+        let shard = &cert.parameters["shard"];
+        let (Some(index), Some(n)) = (shard["index"].as_u64(), shard["count"].as_u64()) else {
+            return Err(usage(p, "no shard record (parameters.shard)".into()));
+        };
+        if let Some((fp, f, fparams)) = &first {
+            if f.tool_version != cert.tool_version {
+                return Err(usage(
+                    p,
+                    format!(
+                        "made by gartowen {}, {} by {}",
+                        cert.tool_version,
+                        fp.display(),
+                        f.tool_version
+                    ),
+                ));
+            }
+            if *fparams != params {
+                return Err(usage(
+                    p,
+                    format!("is a shard of another sweep than {}", fp.display()),
+                ));
+            }
+            if n != count {
+                return Err(usage(
+                    p,
+                    format!("is shard {index}/{n}, {} one of {count}", fp.display()),
+                ));
+            }
+        } else {
+            count = n;
+        }
+        if seen.contains(&index) {
+            return Err(usage(p, format!("shard {index}/{n} is given twice")));
+        }
+        seen.push(index);
+        let pieces: Vec<PieceRecord> = serde_json::from_value(cert.result["pieces"].clone())
+            .map_err(|e| usage(p, format!("bad pieces: {e}")))?;
+        records.extend(pieces);
+        if first.is_none() {
+            first = Some((p.clone(), cert, params));
+        }
+    }
+    let (_, cert, params) = first.expect("at least one file");
+    if let Some(missing) = (1..=count).find(|i| !seen.contains(i)) {
+        return Err(CliError::Usage(format!(
+            "shard {missing}/{count} is missing ({} of {count} given)",
+            seen.len()
+        )));
+    }
+    finish(json, &params, Shard::ALL, cert.inputs, records)
+}
