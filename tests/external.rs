@@ -397,3 +397,89 @@ fn an_enormous_timeout_does_not_panic() {
     let s = gartowen::registry().build("owen-per-bit-hash", 1).unwrap();
     assert_eq!(out[2], s.scramble(2, Width::W32, 0));
 }
+
+#[test]
+fn a_pool_of_instances_sweeps_exactly_as_one_instance_and_the_32_bit_frames_match_64_bit_ones() {
+    use gartowen::core::Scrambler;
+    use gartowen::external::ExternalScrambler;
+    use gartowen::external_pool::ExternalPool;
+    use gartowen::word_sweep::{sweep, SweepPlan};
+    let spawn = || {
+        Arc::new(
+            ExternalProcess::spawn(
+                examples().3.to_str().unwrap(),
+                PowerOfTwoBase::B2,
+                Width::W32,
+                Duration::from_secs(10),
+            )
+            .unwrap(),
+        )
+    };
+    let pool = ExternalPool::new(vec![spawn(), spawn()], 4, Claim::NESTED);
+    let single = ExternalScrambler::new(spawn(), 4, Claim::NESTED);
+    assert_eq!(pool.len(), 2);
+    let plan = SweepPlan::new(Width::W32, PowerOfTwoBase::B2).unwrap();
+    let a = sweep(&pool, &plan, 3, 100..104, &|_| {}).unwrap();
+    let b = sweep(&single, &plan, 3, 100..104, &|_| {}).unwrap();
+    assert_eq!(a, b);
+    assert!(a.failure.is_none() && a.words == 4 << 20);
+    assert!(pool.failure().is_none());
+    // The in-place 32-bit path answers as the 64-bit one, word for word.
+    let mut narrow: Vec<u32> = (0..5000u32).map(|k| k.wrapping_mul(0x9e37_79b9)).collect();
+    let mut wide: Vec<u64> = narrow.iter().map(|&x| x as u64).collect();
+    single.scramble_batch_u32(&mut narrow, 7);
+    single.scramble_batch(&mut wide, Width::W32, 7);
+    assert!(narrow.iter().zip(&wide).all(|(&n, &w)| n as u64 == w));
+    // The broken hash is caught by a pool too.
+    let broken = ExternalPool::new(
+        vec![Arc::new(
+            ExternalProcess::spawn(
+                examples().1.to_str().unwrap(),
+                PowerOfTwoBase::B2,
+                Width::W32,
+                Duration::from_secs(10),
+            )
+            .unwrap(),
+        )],
+        0,
+        Claim::NESTED,
+    );
+    let piece = sweep(&broken, &plan, 0, 0..1, &|_| {}).unwrap();
+    assert!(piece.failure.is_some());
+}
+
+#[test]
+fn a_32_bit_frame_is_refused_by_a_64_bit_session_and_after_a_failure_words_become_zero() {
+    let p = ExternalProcess::spawn(
+        examples().0.to_str().unwrap(),
+        PowerOfTwoBase::B2,
+        Width::W64,
+        Duration::from_secs(10),
+    )
+    .unwrap();
+    let mut words = [1u32, 2, 3];
+    assert!(matches!(
+        p.scramble_batch_u32(0, 0, &mut words),
+        Err(ExternalError::BadRequest(_))
+    ));
+    assert!(matches!(
+        p.scramble_batch_u32(0, 0, &mut []),
+        Err(ExternalError::BadRequest(_))
+    ));
+    // A refused request does not poison the session.
+    assert!(p.failure().is_none());
+    let dead = Arc::new(
+        ExternalProcess::spawn(
+            "/bin/false",
+            PowerOfTwoBase::B2,
+            Width::W32,
+            Duration::from_secs(10),
+        )
+        .unwrap(),
+    );
+    let s = gartowen::external::ExternalScrambler::new(dead.clone(), 0, Claim::NESTED);
+    let mut words = [5u32, 6, 7];
+    gartowen::core::Scrambler::scramble_batch_u32(&s, &mut words, 0);
+    assert_eq!(words, [0, 0, 0]);
+    assert!(dead.failure().is_some());
+}
