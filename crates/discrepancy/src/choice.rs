@@ -6,6 +6,52 @@ use crate::{compensated, exact, fast2d, naive, Discrepancy, Kind, Points};
 /// The relative error bound `auto` must prove before it returns a compensated value.
 pub const AUTO_REL_ERROR: f64 = 1e-12;
 
+/// Largest exact rational the exact method builds, in bits. Reducing it costs about the square
+/// of its size (1 point in 20,000 dimensions, 1.3 Mbit, took 41 s on 2 cores), so larger ones
+/// are refused instead of running for hours.
+pub const EXACT_MAX_BITS: u64 = 1 << 20;
+
+/// Most 64-bit limb products the exact pair sum may take (2^38: about two minutes on 2 cores).
+pub const EXACT_MAX_LIMB_PRODUCTS: u64 = 1 << 38;
+
+/// The exact method's cost on `points`: the bits of its rational (d factors of at most 2W + 2
+/// bits each, and N²) and the limb products of its pair sum (N(N+1)/2 pairs, each a product of
+/// d factors whose accumulator grows by W + 1 bits a factor). Saturates instead of overflowing.
+///
+/// ```
+/// use gartowen_core::Width;
+/// use gartowen_discrepancy::{choice::exact_cost, Points};
+/// let words = vec![0u64; 20_000];
+/// let (bits, products) = exact_cost(Points { words: &words, dims: 20_000, width: Width::W32 });
+/// assert_eq!(bits, 20_000 * 66 + 128);
+/// assert_eq!(products, 20_000u64 * 20_000 * 33 / 128);
+/// ```
+pub fn exact_cost(points: Points) -> (u64, u64) {
+    let (n, d, w) = (
+        points.len() as u64,
+        points.dims as u64,
+        points.width.bits() as u64,
+    );
+    let bits = d.saturating_mul(2 * w + 2).saturating_add(128);
+    let pairs = n.saturating_mul(n.saturating_add(1)) / 2;
+    let per_pair = (d.saturating_mul(d).saturating_mul(w + 1) / 128).max(1);
+    (bits, pairs.saturating_mul(per_pair))
+}
+
+/// Refuses an exact computation past [`EXACT_MAX_BITS`] or [`EXACT_MAX_LIMB_PRODUCTS`], naming
+/// its cost.
+fn exact_within_budget(points: Points) -> Result<(), String> {
+    let (bits, products) = exact_cost(points);
+    if bits > EXACT_MAX_BITS || products > EXACT_MAX_LIMB_PRODUCTS {
+        return Err(format!(
+            "method exact: {} points in {} dimensions need a {bits}-bit rational and {products}              limb products (limits {EXACT_MAX_BITS} and {EXACT_MAX_LIMB_PRODUCTS}); refused              rather than run for hours: use --method compensated (its error bound, if any, is              reported) or fewer points or dimensions",
+            points.len(),
+            points.dims
+        ));
+    }
+    Ok(())
+}
+
 /// A requested method; [`MethodChoice::Auto`] picks the fastest one whose relative error
 /// bound is at most [`AUTO_REL_ERROR`]: fast for 2-D L2-star, else compensated when its bound
 /// holds, else exact.
@@ -72,7 +118,10 @@ pub fn compute(points: Points, kind: Kind, method: MethodChoice) -> Result<Discr
     Ok(match method {
         MethodChoice::Naive => naive::naive(points, kind),
         MethodChoice::Compensated => compensated::compensated(points, kind),
-        MethodChoice::Exact => exact::exact(points, kind),
+        MethodChoice::Exact => {
+            exact_within_budget(points)?;
+            exact::exact(points, kind)
+        }
         MethodChoice::Fast => {
             if !fast_applies {
                 return Err("method fast is 2-D L2-star only".into());
@@ -87,6 +136,11 @@ pub fn compute(points: Points, kind: Kind, method: MethodChoice) -> Result<Discr
                 if c.rel_error_bound.is_some_and(|b| b <= AUTO_REL_ERROR) {
                     c
                 } else {
+                    exact_within_budget(points).map_err(|e| {
+                        format!(
+                            "method auto cannot prove {AUTO_REL_ERROR:e} by compensation, and {e}"
+                        )
+                    })?;
                     exact::exact(points, kind)
                 }
             }

@@ -84,3 +84,52 @@ fn method_choice_auto_picks_what_it_can_prove() {
     }
     assert_eq!(MethodChoice::parse("Auto"), None);
 }
+
+#[test]
+fn exact_work_past_its_budget_is_refused_naming_the_cost_and_just_within_it_runs() {
+    use gartowen_discrepancy::choice::{exact_cost, EXACT_MAX_BITS};
+    // One point: the rational's size grows with d (2W + 2 bits a dimension).
+    let max_d = ((EXACT_MAX_BITS - 128) / 66) as usize;
+    let words = vec![1u64 << 31; max_d + 1];
+    let over = Points {
+        words: &words,
+        dims: max_d + 1,
+        width: Width::W32,
+    };
+    let within = Points {
+        words: &words[..max_d],
+        dims: max_d,
+        width: Width::W32,
+    };
+    assert!(exact_cost(over).0 > EXACT_MAX_BITS && exact_cost(within).0 <= EXACT_MAX_BITS);
+    for kind in Kind::ALL {
+        let e = compute(over, kind, MethodChoice::Exact).unwrap_err();
+        assert!(
+            e.starts_with("method exact:") && e.contains("-bit rational"),
+            "{e}"
+        );
+        assert!(e.contains(&format!("in {} dimensions", max_d + 1)), "{e}");
+        // auto cannot prove its bound here (the compensated sum overflows) and says so.
+        if let Err(e) = compute(over, kind, MethodChoice::Auto) {
+            assert!(e.starts_with("method auto cannot prove"), "{e}");
+        }
+        // Compensated still answers (with whatever bound it can prove).
+        assert!(compute(over, kind, MethodChoice::Compensated).is_ok());
+    }
+    assert_eq!(
+        compute(within, Kind::WrapAround, MethodChoice::Exact)
+            .unwrap()
+            .method,
+        Method::Exact
+    );
+    // Many points in few dimensions: the pair sum's N²/2 products.
+    let many = vec![0u64; 1 << 20];
+    let p = Points {
+        words: &many,
+        dims: 1,
+        width: Width::W32,
+    };
+    let e = compute(p, Kind::L2Star, MethodChoice::Exact).unwrap_err();
+    assert!(e.contains("limb products"), "{e}");
+    assert_eq!(exact_cost(p).1, (1u64 << 20) * ((1 << 20) + 1) / 2);
+}
