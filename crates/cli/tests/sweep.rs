@@ -196,7 +196,30 @@ fn external_programs_are_swept_over_pipes_and_a_broken_one_is_named() {
         "{}",
         stdout(&o)
     );
-    // A program that dies is an external failure (exit 3), not a verdict.
-    let o = run(Path::new("/bin/false"), "1/4096");
+    // A program that dies is an external failure (exit 3), not a verdict; the certificate
+    // is still written and names it.
+    let json = dir.path().join("dead.json");
+    let o = gartowen(&[
+        "verify",
+        "--level",
+        "exhaustive",
+        "--dims",
+        "1",
+        "--external",
+        "/bin/false",
+        "--base",
+        "2",
+        "--shard",
+        "1/4096",
+        "--json",
+        json.to_str().unwrap(),
+    ]);
     assert_eq!(o.status.code(), Some(3), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_slice(&std::fs::read(&json).unwrap()).unwrap();
+    assert_eq!(v["verdict"], "fail");
+    assert!(v["result"]["external_failure"]
+        .as_str()
+        .unwrap()
+        .contains("request 1"));
+    assert!(v["result"]["pieces"].as_array().unwrap().is_empty());
 }

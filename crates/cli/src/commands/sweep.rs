@@ -225,6 +225,7 @@ pub fn run(a: &VerifyArgs, dims_text: &str) -> Result<ExitCode, CliError> {
         .expect("template"),
     );
     let mut records = Vec::new();
+    let mut external_failure = None;
     for (seg, chunks) in work {
         let t = &targets[seg / dims.count() as usize];
         let dim = dims.first + (seg as u64 % dims.count()) as u32;
@@ -233,8 +234,9 @@ pub fn run(a: &VerifyArgs, dims_text: &str) -> Result<ExitCode, CliError> {
         let piece = sweep(t.scrambler.as_ref(), &t.plan, dim, chunks, &|n| bar.inc(n))
             .map_err(|e| CliError::Usage(e.to_string()))?;
         if let Some(e) = t.pool.as_ref().and_then(|p| p.failure()) {
-            bar.finish_and_clear();
-            return Err(CliError::External(e.to_string()));
+            // The piece met the failure (its words became 0): it is not a verdict.
+            external_failure = Some(e.to_string());
+            break;
         }
         records.push(PieceRecord {
             implementation: t.name.clone(),
@@ -264,19 +266,33 @@ pub fn run(a: &VerifyArgs, dims_text: &str) -> Result<ExitCode, CliError> {
             })
             .collect(),
     };
-    finish(a.json.as_ref(), &parameters, shard, inputs, records)
+    let code = finish(
+        a.json.as_ref(),
+        &parameters,
+        shard,
+        inputs,
+        records,
+        external_failure.as_deref(),
+    )?;
+    match external_failure {
+        // The pieces before it and the certificate are written; the exit code says the
+        // program broke, not that a check failed.
+        Some(e) => Err(CliError::External(e)),
+        None => Ok(code),
+    }
 }
 
 /// Prints and certifies: the verdicts when the pieces cover everything (one shard of one, or a
-/// merge), else this shard's pieces.
+/// merge), else the pieces there are (a shard's, or those before an external program failed).
 fn finish(
     json: Option<&PathBuf>,
     parameters: &SweepParameters,
     shard: Shard,
     inputs: Vec<InputRecord>,
     records: Vec<PieceRecord>,
+    external_failure: Option<&str>,
 ) -> Result<ExitCode, CliError> {
-    let complete = shard.count == 1;
+    let complete = shard.count == 1 && external_failure.is_none();
     let verdicts = if complete {
         verdicts(parameters, &records)?
     } else {
@@ -319,7 +335,7 @@ fn finish(
     if let Some(path) = json {
         let cert = Certificate::new(
             "verify",
-            if failed == 0 {
+            if failed == 0 && external_failure.is_none() {
                 CertVerdict::Pass
             } else {
                 CertVerdict::Fail
@@ -332,7 +348,8 @@ fn finish(
             vec![parameters.seed],
             inputs,
             serde_json::json!({ "pieces": piece_records(&records, complete),
-                                "implementations": verdicts }),
+                                "implementations": verdicts,
+                                "external_failure": external_failure }),
         );
         crate::output::write_atomically(Some(path), |out| {
             out.write_all(cert.to_json().as_bytes())
@@ -373,6 +390,18 @@ fn verdicts(
     parameters: &SweepParameters,
     records: &[PieceRecord],
 ) -> Result<Vec<ImplementationVerdict>, CliError> {
+    if let Some(r) = records.iter().find(|r| {
+        !parameters.implementations.contains(&r.implementation)
+            || !(parameters.dims.first..=parameters.dims.last).contains(&r.piece.dim)
+    }) {
+        return Err(CliError::Usage(format!(
+            "a piece of {} dimension {} is not part of this sweep ({}, {})",
+            r.implementation,
+            r.piece.dim,
+            parameters.implementations.join(", "),
+            parameters.dims.label()
+        )));
+    }
     let mut out = Vec::new();
     for name in &parameters.implementations {
         let mut dims = Vec::new();
@@ -515,5 +544,5 @@ pub fn merge(paths: &[PathBuf], json: Option<&PathBuf>) -> Result<ExitCode, CliE
             seen.len()
         )));
     }
-    finish(json, &params, Shard::ALL, cert.inputs, records)
+    finish(json, &params, Shard::ALL, cert.inputs, records, None)
 }
