@@ -278,17 +278,6 @@ pub enum SweepFailure {
 }
 
 impl SweepFailure {
-    /// The first input the failure names (the failures of a dimension are ordered by it).
-    pub fn word(&self) -> u64 {
-        match self {
-            SweepFailure::OutOfRange { input, .. } => *input,
-            SweepFailure::NotNested { inputs, .. } | SweepFailure::Collision { inputs, .. } => {
-                inputs[1]
-            }
-            SweepFailure::SubtreesMerged { first_words, .. } => first_words[1],
-        }
-    }
-
     /// The failure in words, with the base for digit counts.
     pub fn describe(&self, base: u32) -> String {
         match self {

@@ -304,6 +304,36 @@ fn failures_at_chunk_seams_are_found_inside_a_piece_and_between_pieces() {
 }
 
 #[test]
+fn a_seam_whose_second_output_is_the_largest_word_is_still_checked() {
+    // f(0x50) = 0xffff (and back): the seam 0x4f/0x50 between chunks 4 and 5 fails first, in
+    // one piece or split at the seam.
+    let s = Mapped {
+        f: |x, _| match x {
+            0x50 => 0xffff,
+            0xffff => 0x50,
+            x => x,
+        },
+        base: b(1),
+        widths: vec![16],
+    };
+    let plan = SweepPlan::new(w(16), b(1)).unwrap();
+    let split: Vec<SweepPiece> = [0..5, 5..4096]
+        .into_iter()
+        .map(|r| sweep(&s, &plan, 0, r, &|_| {}).unwrap())
+        .collect();
+    for v in [whole(&s, w(16), 0), combine(&split).unwrap()] {
+        match v.failure.unwrap() {
+            SweepFailure::NotNested {
+                inputs, outputs, ..
+            } => {
+                assert_eq!((inputs, outputs), ([0x4f, 0x50], [0x4f, 0xffff]))
+            }
+            f => panic!("{f:?}"),
+        }
+    }
+}
+
+#[test]
 fn pieces_combine_to_the_unsharded_verdict_for_any_split() {
     let s = oracle(2, 5);
     let plan = SweepPlan::new(w(14), b(2)).unwrap();
