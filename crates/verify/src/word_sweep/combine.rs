@@ -232,14 +232,25 @@ fn node_laws(
         }
         for (sum, row) in sums.iter_mut().zip(&p.node_cells) {
             for &(cell, n) in row {
-                *sum.get_mut(cell as usize).ok_or_else(|| {
+                let slot = sum.get_mut(cell as usize).ok_or_else(|| {
                     incomplete(format!("node-law cell {cell} is out of range (< {cells})"))
-                })? += n;
+                })?;
+                *slot = slot.saturating_add(n);
             }
         }
     }
     for (i, counts) in sums.into_iter().enumerate() {
-        laws.push(depth_law(d + i as u32, b, counts));
+        // A passing dimension has a cell for every node: b^k of them at depth k.
+        let k = d + i as u32;
+        let nodes = 1u64 << (q * k);
+        let total = counts.iter().try_fold(0u64, |t, &c| t.checked_add(c));
+        if total != Some(nodes) {
+            return Err(incomplete(format!(
+                "the pieces' node laws count {} nodes at depth {k}, not {nodes}",
+                total.map_or("more than 2^64".into(), |t| t.to_string())
+            )));
+        }
+        laws.push(depth_law(k, b, counts));
     }
     Ok(laws)
 }

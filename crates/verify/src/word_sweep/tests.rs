@@ -370,6 +370,12 @@ fn missing_doubled_and_foreign_pieces_are_refused() {
     let mut wrong = b_.clone();
     wrong.node_cells.pop();
     assert!(err(&[a.clone(), wrong, c.clone()]).contains("node laws"));
+    let mut miscounted = b_.clone();
+    miscounted.node_cells[0][0].1 += 1;
+    assert!(err(&[a.clone(), miscounted, c.clone()]).contains("node laws count"));
+    let mut overflowing = b_.clone();
+    overflowing.node_cells[0][0].1 = u64::MAX;
+    assert!(err(&[a.clone(), overflowing, c.clone()]).contains("node laws count"));
     let mut bad_image = b_.clone();
     bad_image.images[0] = 1 << 20;
     assert!(err(&[a, bad_image, c]).contains("out of range"));
