@@ -728,6 +728,19 @@ pub fn registry_candidate<'a>(
     })
 }
 
+/// The names given, or every registry entry's name when none is given.
+pub fn names_or_all(registry: &Registry, names: &[String]) -> Vec<String> {
+    if names.is_empty() {
+        registry
+            .specs()
+            .iter()
+            .map(|s| s.name.to_string())
+            .collect()
+    } else {
+        names.to_vec()
+    }
+}
+
 /// Runs the battery on the named implementations (all of the registry's when `names` is empty).
 pub fn verify(
     registry: &Registry,
@@ -747,15 +760,7 @@ pub fn verify_shard(
     claim: Option<Claim>,
     progress: &dyn Fn(&str),
 ) -> Result<Vec<ImplReport>, CoreError> {
-    let names: Vec<String> = if names.is_empty() {
-        registry
-            .specs()
-            .iter()
-            .map(|s| s.name.to_string())
-            .collect()
-    } else {
-        names.to_vec()
-    };
+    let names = names_or_all(registry, names);
     let judged = names
         .iter()
         .filter_map(|n| registry.build(n, 0).ok())

@@ -8,6 +8,7 @@ pub mod list;
 pub mod matrices;
 pub mod report;
 pub mod scramble;
+pub mod shards;
 pub mod sweep;
 pub mod verify;
 

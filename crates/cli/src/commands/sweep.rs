@@ -136,16 +136,7 @@ fn targets(a: &VerifyArgs) -> Result<Vec<Target>, CliError> {
         }]);
     }
     let registry = gartowen::registry();
-    let names: Vec<String> = if a.implementations.is_empty() {
-        registry
-            .specs()
-            .iter()
-            .map(|s| s.name.to_string())
-            .collect()
-    } else {
-        a.implementations.clone()
-    };
-    names
+    gartowen::verify::names_or_all(&registry, &a.implementations)
         .iter()
         .map(|n| {
             let s = registry.build(n, 0)?;
@@ -479,70 +470,35 @@ fn print_verdict(v: &ImplementationVerdict) -> Result<(), CliError> {
 /// `verify --merge` of sweep shards: the shards 1..N of one sweep, each once, from the same tool
 /// version and parameters; every implementation, dimension and chunk covered exactly once.
 pub fn merge(paths: &[PathBuf], json: Option<&PathBuf>) -> Result<ExitCode, CliError> {
-    let usage = |p: &PathBuf, m: String| CliError::Usage(format!("{}: {m}", p.display()));
-    let mut first: Option<(PathBuf, Certificate, SweepParameters)> = None;
-    let mut seen: Vec<u64> = Vec::new();
-    let mut count = 0u64;
+    use super::shards::{read_certificate, refuse, ShardSet};
+    let mut set = ShardSet::default();
+    let mut first: Option<(Certificate, SweepParameters)> = None;
     let mut records = Vec::new();
     for p in paths {
-        let text = std::fs::read_to_string(p)
-            .map_err(|e| CliError::Io(format!("cannot read {}: {e}", p.display())))?;
-        let cert = Certificate::parse(&text).map_err(|e| usage(p, e.to_string()))?;
+        let cert = read_certificate(p)?;
         let params: SweepParameters = serde_json::from_value(cert.parameters["sweep"].clone())
             .map_err(|_| {
-                usage(
+                refuse(
                     p,
-                    "not a shard of the every-word sweep (verify --level exhaustive --dims)".into(),
+                    "not a shard of the every-word sweep (verify --level exhaustive --dims)",
                 )
             })?;
-        let shard = &cert.parameters["shard"];
-        let (Some(index), Some(n)) = (shard["index"].as_u64(), shard["count"].as_u64()) else {
-            return Err(usage(p, "no shard record (parameters.shard)".into()));
-        };
-        if let Some((fp, f, fparams)) = &first {
-            if f.tool_version != cert.tool_version {
-                return Err(usage(
-                    p,
-                    format!(
-                        "made by gartowen {}, {} by {}",
-                        cert.tool_version,
-                        fp.display(),
-                        f.tool_version
-                    ),
-                ));
-            }
-            if *fparams != params {
-                return Err(usage(
+        if let Some(fp) = set.admit(p, &cert)? {
+            if first.as_ref().expect("admitted before").1 != params {
+                return Err(refuse(
                     p,
                     format!("is a shard of another sweep than {}", fp.display()),
                 ));
             }
-            if n != count {
-                return Err(usage(
-                    p,
-                    format!("is shard {index}/{n}, {} one of {count}", fp.display()),
-                ));
-            }
-        } else {
-            count = n;
         }
-        if seen.contains(&index) {
-            return Err(usage(p, format!("shard {index}/{n} is given twice")));
-        }
-        seen.push(index);
         let pieces: Vec<PieceRecord> = serde_json::from_value(cert.result["pieces"].clone())
-            .map_err(|e| usage(p, format!("bad pieces: {e}")))?;
+            .map_err(|e| refuse(p, format!("bad pieces: {e}")))?;
         records.extend(pieces);
         if first.is_none() {
-            first = Some((p.clone(), cert, params));
+            first = Some((cert, params));
         }
     }
-    let (_, cert, params) = first.expect("at least one file");
-    if let Some(missing) = (1..=count).find(|i| !seen.contains(i)) {
-        return Err(CliError::Usage(format!(
-            "shard {missing}/{count} is missing ({} of {count} given)",
-            seen.len()
-        )));
-    }
+    set.complete()?;
+    let (cert, params) = first.expect("at least one file");
     finish(json, &params, Shard::ALL, cert.inputs, records, None)
 }

@@ -144,55 +144,29 @@ const SHARED_PARAMETERS: [&str; 5] = [
 /// from the same tool version with the same parameters; anything else is refused with the
 /// file named.
 fn merged(paths: &[PathBuf]) -> Result<(Level, Vec<ImplReport>, Option<String>), CliError> {
-    let mut first: Option<(PathBuf, Certificate)> = None;
-    let mut seen: Vec<usize> = Vec::new();
-    let mut count = 0;
+    use super::shards::{read_certificate, refuse, ShardSet};
+    let mut set = ShardSet::default();
+    let mut first: Option<Certificate> = None;
     let mut parts = Vec::new();
-    let usage = |p: &PathBuf, m: String| CliError::Usage(format!("{}: {m}", p.display()));
     for p in paths {
-        let text = std::fs::read_to_string(p)
-            .map_err(|e| CliError::Io(format!("cannot read {}: {e}", p.display())))?;
-        let cert = Certificate::parse(&text).map_err(|e| usage(p, e.to_string()))?;
+        let cert = read_certificate(p)?;
         if cert.command != "verify" {
-            return Err(usage(
+            return Err(refuse(
                 p,
                 format!("a '{}' certificate, not a verify report", cert.command),
             ));
         }
         if cert.inputs.iter().any(|i| i.kind != "registry") {
-            return Err(usage(
+            return Err(refuse(
                 p,
-                "verifies an external program; only registry shards merge".into(),
+                "verifies an external program; only registry shards merge",
             ));
         }
-        let shard = &cert.parameters["shard"];
-        let (Some(index), Some(n)) = (shard["index"].as_u64(), shard["count"].as_u64()) else {
-            return Err(usage(
-                p,
-                "no shard record (parameters.shard): not written by `verify --shard --json`".into(),
-            ));
-        };
-        if let Some((fp, f)) = &first {
-            if f.tool_version != cert.tool_version {
-                return Err(usage(
-                    p,
-                    format!(
-                        "made by gartowen {}, {} by {}",
-                        cert.tool_version,
-                        fp.display(),
-                        f.tool_version
-                    ),
-                ));
-            }
-            if n as usize != count {
-                return Err(usage(
-                    p,
-                    format!("is shard {index}/{n}, {} one of {count}", fp.display()),
-                ));
-            }
+        if let Some(fp) = set.admit(p, &cert)? {
+            let f = first.as_ref().expect("admitted before");
             for key in SHARED_PARAMETERS {
                 if f.parameters[key] != cert.parameters[key] {
-                    return Err(usage(
+                    return Err(refuse(
                         p,
                         format!(
                             "{key} = {}, but {} = {} in {}",
@@ -204,33 +178,23 @@ fn merged(paths: &[PathBuf]) -> Result<(Level, Vec<ImplReport>, Option<String>),
                     ));
                 }
             }
-        } else {
-            count = n as usize;
         }
-        if seen.contains(&(index as usize)) {
-            return Err(usage(p, format!("shard {index}/{n} is given twice")));
-        }
-        seen.push(index as usize);
         let reports: Vec<ImplReport> =
             serde_json::from_value(cert.result["implementations"].clone())
-                .map_err(|e| usage(p, format!("bad report: {e}")))?;
+                .map_err(|e| refuse(p, format!("bad report: {e}")))?;
         parts.push(reports);
         if first.is_none() {
-            first = Some((p.clone(), cert));
+            first = Some(cert);
         }
     }
-    let (fp, f) = first.expect("at least one file");
-    if let Some(missing) = (1..=count).find(|i| !seen.contains(i)) {
-        return Err(CliError::Usage(format!(
-            "shard {missing}/{count} is missing ({} of {count} given)",
-            seen.len()
-        )));
-    }
+    set.complete()?;
+    let f = first.expect("at least one file");
+    let fp = &paths[0];
     let level: Level = serde_json::from_value(f.parameters["level"].clone())
-        .map_err(|e| usage(&fp, format!("bad level: {e}")))?;
+        .map_err(|e| refuse(fp, format!("bad level: {e}")))?;
     let total = f.parameters["implementations_total"]
         .as_u64()
-        .ok_or_else(|| usage(&fp, "no implementations_total".into()))? as usize;
+        .ok_or_else(|| refuse(fp, "no implementations_total"))? as usize;
     let all = merge(parts, total).map_err(CliError::Usage)?;
     let claim = f.parameters["claim_override"].as_str().map(str::to_string);
     Ok((level, all, claim))
