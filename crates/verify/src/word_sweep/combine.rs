@@ -255,7 +255,7 @@ fn node_laws(
     Ok(laws)
 }
 
-fn depth_law(depth: u32, b: u32, counts: Vec<u64>) -> DepthLaw {
+pub(super) fn depth_law(depth: u32, b: u32, counts: Vec<u64>) -> DepthLaw {
     let uniform = vec![1.0 / counts.len() as f64; counts.len()];
     let test = chi_square(&counts, &uniform);
     let n = test.n.max(1) as f64;

@@ -534,3 +534,27 @@ fn progress_counts_every_word_once() {
     assert_eq!(p.first_output, s.scramble(0, w(18), 0));
     assert_eq!(p.last_output, s.scramble((1 << 18) - 1, w(18), 0));
 }
+
+#[test]
+fn a_depth_law_states_its_cells_distance_and_test() {
+    use super::combine::depth_law;
+    // Base 4: 24 cells, all mass in 4 of them equally: TV = 1 − 4/24.
+    let mut counts = vec![0u64; 24];
+    for c in [0, 5, 10, 23] {
+        counts[c] = 25;
+    }
+    let law = depth_law(3, 4, counts);
+    assert_eq!(law.cells_are, "S_b ranks");
+    assert_eq!((law.depth, law.nodes, law.dof), (3, 100, 23));
+    assert!((law.total_variation - (1.0 - 4.0 / 24.0)).abs() < 1e-12);
+    assert_eq!(law.counts, vec![(0, 25), (5, 25), (10, 25), (23, 25)]);
+    assert!(law.p_value < 1e-20);
+    // Base 8: (π(0), π(1)) cells; a perfectly even law has TV 0 and p = 1.
+    let even = depth_law(1, 8, vec![2; 56]);
+    assert_eq!(even.cells_are, "(pi(0), pi(1))");
+    assert!(even.total_variation.abs() < 1e-12 && even.chi_square == 0.0);
+    assert!(even.p_value > 0.999);
+    // Half the mass in one of two cells more than uniform: TV = 0.25.
+    let tilted = depth_law(0, 2, vec![3, 1]);
+    assert!((tilted.total_variation - 0.25).abs() < 1e-12);
+}
