@@ -93,6 +93,10 @@ pub fn read_points(path: &Path, format: InputFormat) -> Result<PointSet, CliErro
     }
 }
 
+/// Deepest bracket nesting accepted in a .npy header (a plain header has 2: the dict and the
+/// shape tuple).
+const NPY_MAX_NESTING: usize = 4;
+
 /// The shape a .npy header declares and where the header ends (the data starts), read
 /// without trusting the header: the header length must lie inside the file and the shape's
 /// element count must not overflow (npyz would multiply it unchecked).
@@ -118,6 +122,25 @@ fn npy_declared_shape(bytes: &[u8]) -> Result<(Vec<u64>, usize), String> {
             )
         })?;
     let text = String::from_utf8_lossy(&bytes[start..end]);
+    // npyz's header parser takes exponential time in the nesting depth (23 nested braces ran
+    // for minutes; found by fuzzing): a point file's header is a flat dict with a shape tuple.
+    let (mut depth, mut deepest) = (0usize, 0usize);
+    for c in text.chars() {
+        match c {
+            '(' | '[' | '{' => {
+                depth += 1;
+                deepest = deepest.max(depth);
+            }
+            ')' | ']' | '}' => depth = depth.saturating_sub(1),
+            _ => {}
+        }
+    }
+    if deepest > NPY_MAX_NESTING {
+        return Err(format!(
+            "not a valid .npy file: the header nests brackets {deepest} deep (a point file's \
+             header is a flat dict; at most {NPY_MAX_NESTING})"
+        ));
+    }
     let shape_text = text
         .split_once("'shape'")
         .and_then(|(_, rest)| rest.split_once('('))
@@ -446,6 +469,21 @@ mod fuzz {
                 assert!(!set.is_empty() && set.dims() >= 1);
             }
         }
+    }
+
+    #[test]
+    fn deeply_nested_headers_are_refused_at_once() {
+        // 23 nested braces took npyz's parser minutes; refused before it is called.
+        let mut bytes = npy_header("<f8", false, "(3, 2)");
+        let at = bytes.iter().position(|&b| b == b'{').unwrap();
+        bytes.splice(at..at, std::iter::repeat_n(b'{', 23));
+        let len = (bytes.len() - 10) as u16;
+        bytes[8..10].copy_from_slice(&len.to_le_bytes());
+        let e = npy_declared_shape(&bytes).unwrap_err();
+        assert!(e.contains("nests brackets 25 deep"), "{e}");
+        let mut ok = npy_header("<f8", false, "(3, 2)");
+        ok.extend_from_slice(&[0u8; 48]);
+        assert_eq!(npy_declared_shape(&ok).unwrap().0, vec![3, 2]);
     }
 
     #[test]

@@ -57,10 +57,14 @@ fn make_file(dir: &Path, name: &str, spec: &Value) {
             bytes.extend_from_slice(&[2, 0]);
             bytes.extend_from_slice(&(len as u32).to_le_bytes());
         } else {
-            let shape = npy["shape"].as_str().unwrap();
-            let descr = npy["descr"].as_str().unwrap_or("<f8");
-            let mut header =
-                format!("{{'descr': '{descr}', 'fortran_order': False, 'shape': {shape}, }}");
+            let mut header = match npy["raw_header"].as_str() {
+                Some(raw) => raw.to_string(),
+                None => {
+                    let shape = npy["shape"].as_str().unwrap();
+                    let descr = npy["descr"].as_str().unwrap_or("<f8");
+                    format!("{{'descr': '{descr}', 'fortran_order': False, 'shape': {shape}, }}")
+                }
+            };
             while (10 + header.len() + 1) % 64 != 0 {
                 header.push(' ');
             }
