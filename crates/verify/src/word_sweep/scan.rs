@@ -36,6 +36,10 @@ pub struct SweepPiece {
     pub failure: Option<SweepFailure>,
     /// Node-law cell counts for depths d..L (one sparse list of (cell, count) per depth).
     pub node_cells: Vec<Vec<(u32, u64)>>,
+    /// Chunks scanned twice: the bitmap-free base-2 test found something there and the bitmap
+    /// scan named it (0 when everything passed; a diagnostic, not part of the verdict).
+    #[serde(default)]
+    pub rescanned_chunks: u64,
 }
 
 /// The cell of a node permutation given by its digit images, as the inspector's `NodeLaw`
@@ -73,6 +77,8 @@ struct ChunkRecord {
     last: u64,
     failure: Option<SweepFailure>,
     cells: Vec<Vec<u64>>,
+    /// The binary test found something, so the chunk was scanned again with the bitmap.
+    rescanned: bool,
 }
 
 /// Buffers one worker reuses from chunk to chunk.
@@ -282,7 +288,9 @@ fn scan_chunk(
         if r.failure.is_none() {
             return r;
         }
-        return scan_chunk_with::<false>(s, plan, dim, c, scratch, &|_| {});
+        let mut again = scan_chunk_with::<false>(s, plan, dim, c, scratch, &|_| {});
+        again.rescanned = true;
+        return again;
     }
     scan_chunk_with::<false>(s, plan, dim, c, scratch, progress)
 }
@@ -380,6 +388,7 @@ fn scan_chunk_with<const BINARY: bool>(
         last: st.prev,
         failure,
         cells: st.cells,
+        rescanned: false,
     }
 }
 
@@ -448,6 +457,7 @@ pub fn sweep(
         last_output: 0,
         failure: None,
         node_cells: Vec::new(),
+        rescanned_chunks: records.iter().flatten().filter(|r| r.rescanned).count() as u64,
     };
     let shift = plan.width().bits() - plan.chunk_prefix_bits();
     for (c, record) in chunks.zip(&records) {

@@ -177,6 +177,28 @@ fn oracles_pass_in_every_base_and_certify_every_word() {
 }
 
 #[test]
+fn the_base_2_test_passes_a_true_scramble_without_the_bitmap_and_calls_it_on_a_broken_one() {
+    let plan = SweepPlan::new(w(16), b(1)).unwrap();
+    let good = sweep(&oracle(1, 4), &plan, 0, 0..plan.chunks(), &|_| {}).unwrap();
+    assert!(good.failure.is_none());
+    assert_eq!(good.rescanned_chunks, 0);
+    let bad = swapped(1, 16, 0x1234, 0x1224);
+    let piece = sweep(&bad, &plan, 0, 0..plan.chunks(), &|_| {}).unwrap();
+    assert!(piece.failure.is_some());
+    assert!(piece.rescanned_chunks >= 1);
+    // Base 4 never takes the binary test.
+    let plan4 = SweepPlan::new(w(16), b(2)).unwrap();
+    let p4 = sweep(
+        &swapped(2, 16, 0x1234, 0x1224),
+        &plan4,
+        0,
+        0..plan4.chunks(),
+        &|_| {},
+    );
+    assert_eq!(p4.unwrap().rescanned_chunks, 0);
+}
+
+#[test]
 fn a_swap_across_two_deep_subtrees_is_named() {
     // 0x1234 and 0x1234 ^ 0x10 share 11 bits: different subtrees of a depth-11 node.
     let (a, c) = (0x1234, 0x1234 ^ 0x10);
