@@ -224,9 +224,9 @@ fn a_swap_across_two_deep_subtrees_is_named() {
 
 #[test]
 fn a_collision_names_both_inputs_and_the_output() {
-    // 0xa51 and 0xa53 differ in the last base-4 digit only, so f(0xa53) := f(0xa51) keeps
+    // 0xa55 and 0xa57 differ in the last base-4 digit only, so f(0xa53) := f(0xa51) keeps
     // every nesting relation and collides.
-    let (a, c) = (0x0a51, 0x0a53);
+    let (a, c) = (0x0a55, 0x0a57);
     let o = oracle(2, 3);
     let y = o.scramble(a, w(16), 0);
     let s = Mapped {
@@ -244,7 +244,31 @@ fn a_collision_names_both_inputs_and_the_output() {
     );
     assert!(f
         .describe(4)
-        .contains("nested but not injective: inputs 0xa51 and 0xa53 both give"));
+        .contains("nested but not injective: inputs 0xa55 and 0xa57 both give"));
+    // 32 bits, base 32: a node map at depth 2 sends child 8 where child 0 goes, so the
+    // collision's partner is 2^20 words back, in the chunk's previous frame.
+    let collapse = |x: u64, _| {
+        if (x >> 17) & 31 == 8 {
+            x & !(31 << 17)
+        } else {
+            x
+        }
+    };
+    let s = Mapped {
+        f: collapse,
+        base: b(5),
+        widths: vec![32],
+    };
+    let plan = SweepPlan::new(Width::W32, b(5)).unwrap();
+    let start = plan.chunk_start(3);
+    let piece = sweep(&s, &plan, 0, 3..4, &|_| {}).unwrap();
+    assert_eq!(
+        piece.failure,
+        Some(SweepFailure::Collision {
+            inputs: [start, start + (1 << 20)],
+            output: start
+        })
+    );
     // In a later frame of a 32-bit chunk: the partner is found by the rescan.
     let (a, c) = (0x0010_0003u64, 0x001f_fff3u64);
     let s = Mapped {
