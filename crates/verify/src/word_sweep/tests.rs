@@ -327,7 +327,13 @@ fn an_output_wider_than_the_word_is_named() {
         base: b(1),
         widths: vec![16],
     };
-    assert!(whole(&s, w(16), 0).failure.is_some());
+    assert_eq!(
+        whole(&s, w(16), 0).failure,
+        Some(SweepFailure::OutOfRange {
+            input: 0x4320,
+            output: 0x1_0000
+        })
+    );
 }
 
 #[test]
