@@ -610,3 +610,15 @@ fn a_depth_law_states_its_cells_distance_and_test() {
     let tilted = depth_law(0, 2, vec![3, 1]);
     assert!((tilted.total_variation - 0.25).abs() < 1e-12);
 }
+
+#[test]
+fn the_largest_word_is_a_valid_output_at_a_chunk_start() {
+    // Complementing every bit is nested and bijective; chunk 0 starts with output 0xffff.
+    let s = Mapped {
+        f: |x, _| !x & 0xffff,
+        base: b(1),
+        widths: vec![16],
+    };
+    let v = whole(&s, w(16), 0);
+    assert!(v.passed, "{}", v.statement);
+}
