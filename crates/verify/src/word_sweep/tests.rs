@@ -615,7 +615,7 @@ fn a_depth_law_states_its_cells_distance_and_test() {
 fn the_largest_word_is_a_valid_output_at_a_chunk_start() {
     // Complementing every bit is nested and bijective; chunk 0 starts with output 0xffff.
     let s = Mapped {
-        f: |x, _| !x & 0xffff,
+        f: |x: u64, _| !x & 0xffff,
         base: b(1),
         widths: vec![16],
     };
