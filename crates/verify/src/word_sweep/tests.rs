@@ -245,11 +245,12 @@ fn a_collision_names_both_inputs_and_the_output() {
     assert!(f
         .describe(4)
         .contains("nested but not injective: inputs 0xa55 and 0xa57 both give"));
-    // 32 bits, base 32: a node map at depth 2 sends child 8 where child 0 goes, so the
-    // collision's partner is 2^20 words back, in the chunk's previous frame.
+    // 32 bits, base 32: a node map at depth 2 sends child 16 where child 8 goes, so the
+    // collision's partner is 2^20 words back, in the chunk's second frame of four (the rescan
+    // walks past the first).
     let collapse = |x: u64, _| {
-        if (x >> 17) & 31 == 8 {
-            x & !(31 << 17)
+        if (x >> 17) & 31 == 16 {
+            x & !(31 << 17) | 8 << 17
         } else {
             x
         }
@@ -265,8 +266,8 @@ fn a_collision_names_both_inputs_and_the_output() {
     assert_eq!(
         piece.failure,
         Some(SweepFailure::Collision {
-            inputs: [start, start + (1 << 20)],
-            output: start
+            inputs: [start + (1 << 20), start + (1 << 21)],
+            output: start + (1 << 20)
         })
     );
     // In a later frame of a 32-bit chunk: the partner is found by the rescan.
