@@ -222,18 +222,23 @@ pub fn encode_request(h: &RequestHeader, words: &[u64]) -> Result<Vec<u8>, Exter
     }
     let wb = h.width.bits() as usize / 8;
     let mut out = Vec::with_capacity(HEADER_BYTES + words.len() * wb);
+    push_header(&mut out, h, words.len());
+    for &w in words {
+        out.extend_from_slice(&w.to_le_bytes()[..wb]);
+    }
+    Ok(out)
+}
+
+/// Appends the 32 header bytes of a request for `count` words (checked by the caller).
+fn push_header(out: &mut Vec<u8>, h: &RequestHeader, count: usize) {
     out.extend_from_slice(&REQUEST_MAGIC);
     out.extend_from_slice(&PROTOCOL_VERSION.to_le_bytes());
     out.extend_from_slice(&(h.width.bits() as u16).to_le_bytes());
     out.extend_from_slice(&h.base.base().to_le_bytes());
     out.extend_from_slice(&h.dim.to_le_bytes());
-    out.extend_from_slice(&(words.len() as u32).to_le_bytes());
+    out.extend_from_slice(&(count as u32).to_le_bytes());
     out.extend_from_slice(&0u32.to_le_bytes());
     out.extend_from_slice(&h.seed.to_le_bytes());
-    for &w in words {
-        out.extend_from_slice(&w.to_le_bytes()[..wb]);
-    }
-    Ok(out)
 }
 
 /// Decodes a request frame (the child's side; the host uses it in tests and fuzzing):
@@ -540,9 +545,7 @@ impl ExternalProcess {
         self.with_session(|s| {
             let mut frame = std::mem::take(&mut s.frame);
             frame.clear();
-            frame
-                .extend_from_slice(&encode_request(&self.header(seed, dim), &[0])?[..HEADER_BYTES]);
-            frame[16..20].copy_from_slice(&(words.len() as u32).to_le_bytes());
+            push_header(&mut frame, &self.header(seed, dim), words.len());
             for &w in words.iter() {
                 frame.extend_from_slice(&w.to_le_bytes());
             }

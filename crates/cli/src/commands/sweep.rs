@@ -65,7 +65,7 @@ impl DimRange {
 /// One implementation to sweep.
 struct Target {
     name: String,
-    scrambler: Box<dyn Scrambler>,
+    scrambler: Arc<dyn Scrambler>,
     plan: SweepPlan,
     pool: Option<Arc<ExternalPool>>,
 }
@@ -130,7 +130,7 @@ fn targets(a: &VerifyArgs) -> Result<Vec<Target>, CliError> {
         let plan = SweepPlan::new(Width::W32, base).expect("32 bits");
         return Ok(vec![Target {
             name: format!("external:{command}"),
-            scrambler: Box::new(SharedPool(pool.clone())),
+            scrambler: pool.clone(),
             plan,
             pool: Some(pool),
         }]);
@@ -144,42 +144,12 @@ fn targets(a: &VerifyArgs) -> Result<Vec<Target>, CliError> {
                 SweepPlan::for_scrambler(s.as_ref()).map_err(|e| CliError::Usage(e.to_string()))?;
             Ok(Target {
                 name: s.name(),
-                scrambler: s,
+                scrambler: Arc::from(s),
                 plan,
                 pool: None,
             })
         })
         .collect()
-}
-
-/// The pool seen through a box (the target owns a `Box<dyn Scrambler>`).
-struct SharedPool(Arc<ExternalPool>);
-
-impl Scrambler for SharedPool {
-    fn name(&self) -> String {
-        self.0.name()
-    }
-    fn base(&self) -> PowerOfTwoBase {
-        self.0.base()
-    }
-    fn claim(&self) -> Claim {
-        self.0.claim()
-    }
-    fn supports_width(&self, width: Width) -> bool {
-        self.0.supports_width(width)
-    }
-    fn scramble(&self, x: u64, width: Width, dim: u32) -> u64 {
-        self.0.scramble(x, width, dim)
-    }
-    fn scramble_batch(&self, words: &mut [u64], width: Width, dim: u32) {
-        self.0.scramble_batch(words, width, dim)
-    }
-    fn scramble_batch_u32(&self, words: &mut [u32], dim: u32) {
-        self.0.scramble_batch_u32(words, dim)
-    }
-    fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
-        self.0.unscramble(y, width, dim)
-    }
 }
 
 /// Runs the sweep (or this shard's part of it).
