@@ -368,8 +368,10 @@ class VerifyResult:
         certificate: the certificate document (``gartowen verify --json`` format).
         python_calls: calls made to the function.
         python_words: words passed to it.
-        python_seconds: seconds spent inside the function.
-        seconds: wall seconds of the whole battery (``python_seconds`` included).
+        python_seconds: seconds spent inside the function, summed over calls. Calls from
+            the battery's worker threads can overlap while the function releases the GIL
+            (NumPy does), so this sum can exceed ``seconds``.
+        seconds: wall seconds of the whole battery.
     """
 
     passed: bool

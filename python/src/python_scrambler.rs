@@ -57,7 +57,8 @@ impl PythonFunction {
     }
 
     /// Calls made, words scrambled and seconds spent inside the function (conversions
-    /// excluded).
+    /// excluded), summed over calls: calls on different threads can overlap while the
+    /// function releases the GIL, so the sum is not bounded by the battery's wall time.
     pub fn usage(&self) -> (u64, u64, f64) {
         (
             self.calls.load(Ordering::Relaxed),

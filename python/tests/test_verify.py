@@ -23,7 +23,9 @@ def test_numpy_owen_scramble_passes_and_matches_its_twin():
     assert r.report["claim"] == "owen"
     assert r.certificate["verdict"] == "pass"
     assert r.certificate["inputs"][0]["kind"] == "python"
-    assert r.python_calls > 0 and 0 < r.python_seconds <= r.seconds
+    # Only that time was recorded: tests never compare clocks (overlapping calls can sum
+    # past the battery's wall time).
+    assert r.python_calls > 0 and r.python_seconds > 0
     assert r.python_words >= r.python_calls
 
 
