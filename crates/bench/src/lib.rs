@@ -6,3 +6,4 @@ pub mod harness;
 pub mod integrands;
 pub mod report;
 pub mod spectrum;
+pub mod speed;

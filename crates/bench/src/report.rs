@@ -9,7 +9,8 @@ use crate::figures::{loglog_lines, loglog_points, panel_grid, FigureError, Panel
 use crate::harness::{methods_for, run_method, HarnessConfig, HarnessError, Method, MethodResult};
 use crate::integrands::{standard_families, Family, Smoothness};
 use crate::spectrum::power_spectrum;
-use gartowen::core::{BuildContext, PowerOfTwoBase, Registry, SplitMix64, Width};
+pub use crate::speed::{measure_speed, SpeedRow};
+use gartowen::core::{BuildContext, Registry, Width};
 use gartowen::discrepancy::{curves, Kind};
 use gartowen::seq::SequenceKind;
 use gartowen::verify::{verify, Level, Verdict};
@@ -21,21 +22,6 @@ use std::time::Instant;
 pub const REPORT_SCHEMA: &str = "gartowen-report";
 /// Version of [`REPORT_SCHEMA`].
 pub const REPORT_VERSION: u32 = 1;
-
-/// The speed of one scrambler.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct SpeedRow {
-    /// Registry request.
-    pub scrambler: String,
-    /// Base.
-    pub base: u32,
-    /// Nanoseconds per 32-bit coordinate (this machine, this run).
-    pub ns_per_coord: f64,
-    /// ns_per_coord divided by that of `lk-hash` in the same run.
-    pub ratio_to_lk_hash: f64,
-    /// Bytes of tables the scrambler holds.
-    pub table_bytes: usize,
-}
 
 /// Randomization quality of one scrambler against uniform nested scrambling.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -101,8 +87,17 @@ pub struct Thresholds {
     /// An RMSE at the largest N regresses when it grows by more than this factor:
     /// 1 + 3/√(2R), three standard errors of an RMSE estimated from R replicates.
     pub rmse_factor: f64,
-    /// A speed ratio regresses when it grows by more than this factor.
+    /// A speed ratio regresses when it grows by more than this factor, widened by
+    /// `speed_z` standard errors of the two runs' medians ([`crate::speed`]).
     pub speed_factor: f64,
+    /// Standard errors beyond `speed_factor` a speed change must reach (one-sided; 3 gives
+    /// a false-alarm rate of at most 0.135% per row under normal log-noise).
+    #[serde(default = "default_speed_z")]
+    pub speed_z: f64,
+}
+
+fn default_speed_z() -> f64 {
+    3.0
 }
 
 /// Everything the report shows.
@@ -182,74 +177,6 @@ pub struct ReportConfig {
     pub quick: bool,
     /// Master seed.
     pub seed: u64,
-}
-
-/// Nanoseconds per coordinate of `request`, timed over `reps` passes of 4096 words.
-fn ns_per_coord(
-    registry: &Registry,
-    request: &str,
-    default_base: PowerOfTwoBase,
-    reps: u32,
-) -> (f64, u32, usize) {
-    let s = registry
-        .build_with(
-            request,
-            &BuildContext {
-                seed: 1,
-                default_base,
-            },
-        )
-        .expect("registry entry");
-    let mut rng = SplitMix64::new(9);
-    let words: Vec<u64> = (0..4096).map(|_| rng.next_u32() as u64).collect();
-    let mut sink = 0u64;
-    let t = Instant::now();
-    for r in 0..reps {
-        for (i, &w) in words.iter().enumerate() {
-            sink ^= s.scramble(w, Width::W32, (i as u32 + r) & 7);
-        }
-    }
-    std::hint::black_box(sink);
-    let ns = t.elapsed().as_secs_f64() * 1e9 / (reps as f64 * words.len() as f64);
-    (ns, s.base().base(), s.table_bytes())
-}
-
-/// Speeds of every registry entry (oracles in base 16), with lk-hash as the reference.
-pub fn measure_speed(registry: &Registry, quick: bool) -> Vec<SpeedRow> {
-    let reps = if quick { 8 } else { 64 };
-    let mut rows: Vec<SpeedRow> = registry
-        .specs()
-        .iter()
-        .map(|spec| {
-            let request = if spec.name == "owen-oracle" {
-                "owen-oracle:base=16".to_string()
-            } else {
-                spec.name.to_string()
-            };
-            // The oracle is ~100× slower than the rest; fewer passes keep the run short.
-            let r = if spec.name == "owen-oracle" {
-                reps / 8 + 1
-            } else {
-                reps
-            };
-            let (ns, base, table_bytes) = ns_per_coord(registry, &request, spec.default_base, r);
-            SpeedRow {
-                scrambler: request,
-                base,
-                ns_per_coord: ns,
-                ratio_to_lk_hash: 0.0,
-                table_bytes,
-            }
-        })
-        .collect();
-    let lk = rows
-        .iter()
-        .find(|r| r.scrambler == "lk-hash")
-        .map_or(1.0, |r| r.ns_per_coord);
-    for r in &mut rows {
-        r.ratio_to_lk_hash = r.ns_per_coord / lk;
-    }
-    rows
 }
 
 /// The randomization-quality table from the verify battery at quick level, one row per
@@ -434,6 +361,7 @@ pub fn build_report(
             slope: 0.15,
             rmse_factor: 1.0 + 3.0 / (2.0 * harness.replicates as f64).sqrt(),
             speed_factor: 1.5,
+            speed_z: default_speed_z(),
         },
         harness,
         integrands: families.iter().map(|f| f.name()).collect(),
@@ -505,12 +433,17 @@ pub fn compare(baseline: &Report, now: &Report) -> Vec<Regression> {
     }
     for s in &now.speed {
         if let Some(o) = baseline.speed.iter().find(|o| o.scrambler == s.scrambler) {
-            if s.ratio_to_lk_hash > o.ratio_to_lk_hash * t.speed_factor {
+            let allowed = crate::speed::allowed_growth(o, s, t.speed_factor, t.speed_z);
+            if s.ratio_to_lk_hash > o.ratio_to_lk_hash * allowed {
                 out.push(Regression {
                     what: format!("{}: time per coordinate relative to lk-hash", s.scrambler),
                     before: o.ratio_to_lk_hash,
                     after: s.ratio_to_lk_hash,
-                    rule: format!("ratio grew by more than ×{}", t.speed_factor),
+                    rule: format!(
+                        "median ratio grew by more than ×{allowed:.3} (×{} widened by {} \
+                         standard errors of the two medians)",
+                        t.speed_factor, t.speed_z
+                    ),
                 });
             }
         }
@@ -821,7 +754,7 @@ pub fn markdown(report: &Report, figures: &[String], regressions: Option<&[Regre
         }
     );
     md += "## Speed and randomization quality\n\n\
-           ns per 32-bit coordinate (random words, dims 0..8), its ratio to `lk-hash`, table bytes, \
+           ns per 32-bit coordinate (random words, dims 0..8; the median of rounds), its ratio to `lk-hash` (the median of per-round ratios), table bytes, \
            and the node-permutation law against uniform S_b from `verify --level quick`.\n\n\
            | scrambler | base | ns/coord | × lk-hash | table bytes | nested | node law | detail |\n\
            |---|---|---|---|---|---|---|---|\n";
@@ -883,8 +816,15 @@ pub fn markdown(report: &Report, figures: &[String], regressions: Option<&[Regre
     }
     if let Some(r) = regressions {
         md += &format!(
-            "## Baseline comparison\n\nThresholds: slope +{}, RMSE ×{:.3}, speed ratio ×{}.\n\n",
-            report.thresholds.slope, report.thresholds.rmse_factor, report.thresholds.speed_factor
+            "## Baseline comparison\n\nThresholds: slope +{}, RMSE ×{:.3}, speed ratio ×{}.\n\n\
+             Speed ratios are medians over rounds, each round's ratio against `lk-hash` timed in \
+             the same round; a speed row regresses only beyond ×{} widened by {} standard errors \
+             of the two medians (one-sided; at most 0.135% false alarms per row at 3).\n\n",
+            report.thresholds.slope,
+            report.thresholds.rmse_factor,
+            report.thresholds.speed_factor,
+            report.thresholds.speed_factor,
+            report.thresholds.speed_z
         );
         if r.is_empty() {
             md += "No regressions.\n";

@@ -40,6 +40,7 @@ fn report(slope: f64, rmse_last: f64, ratio: f64) -> Report {
             base: 2,
             ns_per_coord: 10.0,
             ratio_to_lk_hash: ratio,
+            ratio_rounds: vec![],
             table_bytes: 0,
         }],
         quality: vec![],
@@ -48,6 +49,7 @@ fn report(slope: f64, rmse_last: f64, ratio: f64) -> Report {
             slope: 0.15,
             rmse_factor: 1.75,
             speed_factor: 1.5,
+            speed_z: 3.0,
         },
         threads: 2,
         seconds: 1.0,
@@ -71,6 +73,53 @@ fn identical_reports_do_not_regress_and_each_kind_of_regression_is_caught() {
     assert!(slower[0].what.contains("relative to lk-hash"));
     // A better run is not a regression.
     assert!(compare(&base, &report(-1.7, 5e-6, 1.0)).is_empty());
+}
+
+/// A report whose one speed row has these per-round ratios (median as its ratio).
+fn report_with_rounds(rounds: &[f64]) -> Report {
+    let mut r = report(-1.5, 1e-5, gartowen_bench::speed::median(rounds));
+    r.speed[0].ratio_rounds = rounds.to_vec();
+    r
+}
+
+#[test]
+fn one_disturbed_round_is_not_a_regression_but_a_slower_scrambler_is() {
+    // The false alarm: ratio 1.9 → 3.4 because the reference was timed in a fast
+    // moment. With rounds, that is one round in five, and the median stays.
+    let base = report_with_rounds(&[1.9, 1.95, 1.85, 1.9, 1.92]);
+    let disturbed = report_with_rounds(&[1.9, 3.4, 1.88, 1.93, 1.91]);
+    assert!(compare(&base, &disturbed).is_empty());
+    // Before rounds existed (one timing), the same disturbance was flagged.
+    assert_eq!(
+        compare(&report(-1.5, 1e-5, 1.9), &report(-1.5, 1e-5, 3.4)).len(),
+        1
+    );
+    // A scrambler that became 2× slower in every round is caught.
+    let slower = report_with_rounds(&[3.8, 3.9, 3.7, 3.85, 3.8]);
+    let r = compare(&base, &slower);
+    assert_eq!(r.len(), 1);
+    assert!(r[0].rule.contains("standard errors"), "{}", r[0].rule);
+    // Noisy runs widen the tolerance: 1.7× in medians over very spread rounds passes…
+    let spread = report_with_rounds(&[1.2, 1.9, 3.0, 1.5, 2.4]);
+    let spread_slow = report_with_rounds(&[2.0, 3.2, 5.1, 2.6, 4.1]);
+    assert!(compare(&spread, &spread_slow).is_empty());
+    // …and the same medians over quiet rounds fail.
+    let quiet_slow = report_with_rounds(&[3.2, 3.25, 3.2, 3.15, 3.2]);
+    let quiet = report_with_rounds(&[1.9, 1.9, 1.9, 1.9, 1.9]);
+    assert_eq!(compare(&quiet, &quiet_slow).len(), 1);
+}
+
+#[test]
+fn a_baseline_without_speed_z_reads_with_the_default() {
+    let r = report(-1.5, 1e-5, 2.0);
+    let mut v = serde_json::to_value(&r).unwrap();
+    v["thresholds"].as_object_mut().unwrap().remove("speed_z");
+    v["speed"][0]
+        .as_object_mut()
+        .unwrap()
+        .remove("ratio_rounds");
+    let back: Report = serde_json::from_value(v).unwrap();
+    assert_eq!(back, r);
 }
 
 #[test]
