@@ -290,6 +290,32 @@ fn a_hanging_program_times_out_and_nothing_is_left_running() {
 }
 
 #[test]
+fn a_dead_program_whose_helper_holds_its_pipes_is_named_as_dead_and_the_helper_killed() {
+    // The helper leaves the process group with setsid and keeps stdin and stdout: the pipe
+    // never reaches end of file, so the host once waited the whole timeout and reported a
+    // hang. The program reads the request, then exits with 3.
+    let marker = "27.1828";
+    let (e, _) = first_failure(
+        &format!(
+            "sh -c 'setsid sh -c \"exec sleep {marker}\" <&0 & head -c 44 >/dev/null; exit 3'"
+        ),
+        60_000,
+    );
+    let text = e.to_string();
+    assert!(
+        matches!(e, ExternalError::Exited { batch: 1, .. }),
+        "{text}"
+    );
+    assert!(text.contains("exited with status 3"), "{text}");
+    assert!(text.contains("still held open by pid"), "{text}");
+    let waited = std::time::Instant::now();
+    while running(marker) && waited.elapsed() < Duration::from_secs(5) {
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    assert!(!running(marker), "the setsid helper survived");
+}
+
+#[test]
 fn a_failing_program_fails_every_check_with_the_reason() {
     let p = spawn("sh -c 'exec sleep 30'", Width::W32, 200);
     let c = external_candidate(Arc::new(p), 0, Claim::OWEN, None);

@@ -553,11 +553,9 @@ pub fn write_figures(
     }
     // Speed against error: RMSE at the largest N against time per point.
     for integrand in ["gaussian-2d", "heaviside"] {
-        let k = report
-            .integrands
-            .iter()
-            .position(|i| i == integrand)
-            .expect("standard");
+        let Some(k) = report.integrands.iter().position(|i| i == integrand) else {
+            continue;
+        };
         let pts: Vec<Series> = report
             .methods
             .iter()
@@ -840,7 +838,10 @@ pub fn markdown(report: &Report, figures: &[String], regressions: Option<&[Regre
 }
 
 /// Writes report.json, report.md and the figures into `dir`; returns the regressions against
-/// `baseline` (empty without one).
+/// `baseline` (empty without one). All or nothing: every file is written into
+/// [`staging_dir`] first and moved into `dir` only when all are complete, so a write error
+/// (a full disk) leaves `dir` as it was, an earlier report in it intact, and no staging
+/// folder behind.
 pub fn write_report(
     report: &Report,
     registry: &Registry,
@@ -849,23 +850,52 @@ pub fn write_report(
 ) -> Result<Vec<Regression>, ReportError> {
     std::fs::create_dir_all(dir)
         .map_err(|e| ReportError::Io(format!("cannot create {}: {e}", dir.display())))?;
-    let figures = write_figures(report, registry, dir)?;
+    let staging = staging_dir(dir);
+    // A staging folder left by a killed run of this pid would only hold stale files.
+    let _ = std::fs::remove_dir_all(&staging);
+    std::fs::create_dir(&staging)
+        .map_err(|e| ReportError::Io(format!("cannot create {}: {e}", staging.display())))?;
     let regressions = baseline.map(|b| compare(b, report));
-    let write = |name: &str, text: &str| -> Result<PathBuf, ReportError> {
-        let path = dir.join(name);
-        let tmp = dir.join(format!(".{name}.tmp"));
-        std::fs::write(&tmp, text)
-            .and_then(|_| std::fs::rename(&tmp, &path))
-            .map_err(|e| ReportError::Io(format!("cannot write {}: {e}", path.display())))?;
-        Ok(path)
+    let staged = stage_report(report, registry, &staging, regressions.as_deref());
+    let moved = staged.and_then(|names| {
+        // Renames within one folder need no space: once every file is staged, the report
+        // cannot stop half-written.
+        for name in &names {
+            std::fs::rename(staging.join(name), dir.join(name)).map_err(|e| {
+                ReportError::Io(format!("cannot write {}: {e}", dir.join(name).display()))
+            })?;
+        }
+        Ok(())
+    });
+    let _ = std::fs::remove_dir_all(&staging);
+    moved.map(|()| regressions.unwrap_or_default())
+}
+
+/// The folder inside `dir` where [`write_report`] writes every file before moving them into
+/// place (named by the process id, so two runs into one folder do not share it).
+pub fn staging_dir(dir: &Path) -> PathBuf {
+    dir.join(format!(".report-staging-{}", std::process::id()))
+}
+
+/// Writes the figures, report.json and report.md into `staging`; returns the file names.
+fn stage_report(
+    report: &Report,
+    registry: &Registry,
+    staging: &Path,
+    regressions: Option<&[Regression]>,
+) -> Result<Vec<String>, ReportError> {
+    let figures = write_figures(report, registry, staging)?;
+    let write = |name: &str, text: &str| -> Result<(), ReportError> {
+        std::fs::write(staging.join(name), text)
+            .map_err(|e| ReportError::Io(format!("cannot write {name}: {e}")))
     };
     write(
         "report.json",
         &serde_json::to_string_pretty(report).expect("serializable"),
     )?;
-    write(
-        "report.md",
-        &markdown(report, &figures, regressions.as_deref()),
-    )?;
-    Ok(regressions.unwrap_or_default())
+    write("report.md", &markdown(report, &figures, regressions))?;
+    let mut names = figures;
+    names.push("report.json".into());
+    names.push("report.md".into());
+    Ok(names)
 }

@@ -35,11 +35,15 @@ fn remove_pending() {
     gartowen::external::kill_live_groups();
     let mut pending = PENDING.lock().unwrap_or_else(|e| e.into_inner());
     for path in pending.drain(..) {
-        let _ = std::fs::remove_file(path);
+        if path.is_dir() {
+            let _ = std::fs::remove_dir_all(path);
+        } else {
+            let _ = std::fs::remove_file(path);
+        }
     }
 }
 
-/// Registers a temporary file being written.
+/// Registers a temporary file (or a staging folder, removed with its contents) being written.
 pub fn register(path: &Path) {
     PENDING
         .lock()

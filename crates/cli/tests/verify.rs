@@ -495,16 +495,28 @@ fn merge_refuses_incomplete_or_mixed_shards() {
 /// program started (here a `sleep`) does not outlive verify (it once kept running).
 #[test]
 fn a_signal_to_verify_ends_the_external_programs_helpers() {
+    signal_ends_helper(|pidfile| format!("sleep 300 &\necho $! > {pidfile}\nwait\n"));
+}
+
+/// A helper that left the program's process group with `setsid` (so the group kill misses it)
+/// but holds the program's pipes is found by its pipes and killed too.
+#[test]
+fn a_signal_to_verify_ends_a_helper_that_left_the_process_group() {
+    signal_ends_helper(|pidfile| {
+        format!("setsid sh -c 'echo $$ > {pidfile}; exec sleep 300' <&0 &\nwait\n")
+    });
+}
+
+/// Starts `verify --external` on a script (its body made from the helper's pid file path),
+/// waits for the helper's pid, sends SIGTERM to verify and asserts the helper ends.
+fn signal_ends_helper(body: impl Fn(&str) -> String) {
     use std::os::unix::fs::PermissionsExt;
     let dir = tempfile::tempdir().unwrap();
     let pidfile = dir.path().join("helper.pid");
     let script = dir.path().join("hang.sh");
     std::fs::write(
         &script,
-        format!(
-            "#!/bin/sh\nsleep 300 &\necho $! > {}\nwait\n",
-            pidfile.display()
-        ),
+        format!("#!/bin/sh\n{}", body(&pidfile.display().to_string())),
     )
     .unwrap();
     std::fs::set_permissions(&script, std::fs::Permissions::from_mode(0o755)).unwrap();

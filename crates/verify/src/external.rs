@@ -363,37 +363,48 @@ pub struct ExternalProcess {
     base: PowerOfTwoBase,
     timeout: Duration,
     stderr: Arc<Mutex<Vec<u8>>>,
+    /// Inodes of the pipes to the child's stdin, stdout and stderr.
+    pipes: Vec<u64>,
     session: Mutex<Session>,
 }
 
 const STDERR_KEEP: usize = 4096;
 
-/// Process groups (leader pids) of the external programs still running, so that a signal
-/// handler can end them: a process killed by a signal runs no `Drop`.
-static LIVE_GROUPS: Mutex<Vec<u32>> = Mutex::new(Vec::new());
+/// How often a wait for a reply looks at whether the child is still alive.
+const EXIT_POLL: Duration = Duration::from_millis(50);
 
-/// Kills the process group of every external program still running (with its helpers). Meant
-/// for a signal handler's last act before the process ends.
+/// Process groups (leader pids) of the external programs still running, with the inodes of
+/// their pipes, so that a signal handler can end them: a process killed by a signal runs no
+/// `Drop`.
+static LIVE_GROUPS: Mutex<Vec<(u32, Vec<u64>)>> = Mutex::new(Vec::new());
+
+/// Kills the process group of every external program still running (with its helpers), and
+/// every process still holding one of their pipes (helpers that left the group with
+/// `setsid`). Meant for a signal handler's last act before the process ends.
 pub fn kill_live_groups() {
-    let groups: Vec<u32> = LIVE_GROUPS
+    let groups: Vec<(u32, Vec<u64>)> = LIVE_GROUPS
         .lock()
         .unwrap_or_else(|e| e.into_inner())
         .drain(..)
         .collect();
     #[cfg(unix)]
-    for pid in groups {
+    for (pid, _) in &groups {
         // SAFETY: kill(2) with a valid signal number has no memory-safety preconditions.
         unsafe {
-            libc::kill(-(pid as i32), libc::SIGKILL);
+            libc::kill(-(*pid as i32), libc::SIGKILL);
         }
     }
+    let pipes: Vec<u64> = groups.into_iter().flat_map(|(_, p)| p).collect();
+    crate::pipe_holders::kill_holders(&pipes);
 }
 
-fn kill_group(child: &mut Child) {
+/// Kills the child's process group, reaps the child, then kills whatever still holds its
+/// pipes (a helper that escaped the group).
+fn kill_group(child: &mut Child, pipes: &[u64]) {
     LIVE_GROUPS
         .lock()
         .unwrap_or_else(|e| e.into_inner())
-        .retain(|&p| p != child.id());
+        .retain(|(p, _)| *p != child.id());
     #[cfg(unix)]
     {
         // The child leads its own process group; a negative pid signals the whole group, so
@@ -405,6 +416,29 @@ fn kill_group(child: &mut Child) {
     }
     let _ = child.kill();
     let _ = child.wait();
+    crate::pipe_holders::kill_holders(pipes);
+}
+
+/// The inodes of the pipes behind the child's standard streams.
+fn child_pipes(child: &Child) -> Vec<u64> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::io::AsRawFd;
+        let fds = [
+            child.stdin.as_ref().map(|x| x.as_raw_fd()),
+            child.stdout.as_ref().map(|x| x.as_raw_fd()),
+            child.stderr.as_ref().map(|x| x.as_raw_fd()),
+        ];
+        fds.into_iter()
+            .flatten()
+            .filter_map(crate::pipe_holders::pipe_inode)
+            .collect()
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = child;
+        Vec::new()
+    }
 }
 
 impl ExternalProcess {
@@ -434,10 +468,11 @@ impl ExternalProcess {
             program: words[0].clone(),
             reason: e.to_string(),
         })?;
+        let pipes = child_pipes(&child);
         LIVE_GROUPS
             .lock()
             .unwrap_or_else(|e| e.into_inner())
-            .push(child.id());
+            .push((child.id(), pipes.clone()));
         let stdin = child.stdin.take();
         let mut out = child.stdout.take().expect("piped stdout");
         let mut err = child.stderr.take().expect("piped stderr");
@@ -472,6 +507,7 @@ impl ExternalProcess {
             base,
             timeout,
             stderr,
+            pipes,
             session: Mutex::new(Session {
                 child,
                 stdin,
@@ -585,7 +621,7 @@ impl ExternalProcess {
             if !matches!(e, ExternalError::BadRequest(_)) {
                 s.failure = Some(e.clone());
                 s.stdin = None;
-                kill_group(&mut s.child);
+                kill_group(&mut s.child, &self.pipes);
             }
         }
         result
@@ -622,12 +658,12 @@ impl ExternalProcess {
                 }),
             );
         }
+        // Set once the child is seen to have exited while its stdout stays open.
+        let mut exited_at: Option<Instant> = None;
         while s.pending.len() < need {
             let now = Instant::now();
-            match s
-                .stdout
-                .recv_timeout(deadline.saturating_duration_since(now))
-            {
+            let left = deadline.saturating_duration_since(now);
+            match s.stdout.recv_timeout(left.min(EXIT_POLL)) {
                 Ok(chunk) => {
                     s.pending.extend_from_slice(&chunk);
                     // A reply that starts wrong is garbage now; do not wait for more bytes.
@@ -641,6 +677,31 @@ impl ExternalProcess {
                                 &s.pending[..k]
                             ),
                         });
+                    }
+                }
+                Err(RecvTimeoutError::Timeout) if left > EXIT_POLL => {
+                    // A dead child whose stdout is held open by a helper outside its group
+                    // never sends end of file: look at the child itself. Bytes it wrote
+                    // before exiting get one more poll to arrive.
+                    match exited_at {
+                        Some(t) if t.elapsed() >= EXIT_POLL => {
+                            let received = s.pending.len();
+                            return Err(self.exited_or(s, batch, need, |stderr| {
+                                ExternalError::Exited {
+                                    batch,
+                                    status: "exited".into(),
+                                    received,
+                                    expected: need,
+                                    stderr,
+                                }
+                            }));
+                        }
+                        Some(_) => {}
+                        None => {
+                            if let Ok(Some(_)) = s.child.try_wait() {
+                                exited_at = Some(Instant::now());
+                            }
+                        }
                     }
                 }
                 Err(RecvTimeoutError::Timeout) => {
@@ -685,9 +746,19 @@ impl ExternalProcess {
         let start = Instant::now();
         while start.elapsed() < Duration::from_millis(500) {
             if let Ok(Some(status)) = s.child.try_wait() {
+                let mut status = describe_status(status);
+                let held = crate::pipe_holders::holders(&self.pipes);
+                if !held.is_empty() {
+                    let pids: Vec<String> = held.iter().map(|p| p.to_string()).collect();
+                    status += &format!(
+                        "; its pipes are still held open by pid {}, started outside its \
+                         process group (killed with the program)",
+                        pids.join(", ")
+                    );
+                }
                 return ExternalError::Exited {
                     batch,
-                    status: describe_status(status),
+                    status,
                     received: s.pending.len(),
                     expected: need,
                     stderr: self.stderr_tail(),
@@ -726,7 +797,7 @@ impl Drop for ExternalProcess {
             }
             std::thread::sleep(Duration::from_millis(2));
         }
-        kill_group(&mut s.child);
+        kill_group(&mut s.child, &self.pipes);
     }
 }
 

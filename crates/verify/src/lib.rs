@@ -24,6 +24,7 @@ pub mod law;
 pub mod laws;
 pub mod marginal;
 pub mod pair_lemma;
+pub mod pipe_holders;
 pub mod sampling;
 pub mod stats;
 pub mod word_sweep;

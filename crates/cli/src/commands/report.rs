@@ -76,8 +76,11 @@ pub fn run(a: ReportArgs) -> Result<ExitCode, CliError> {
     )
     .map_err(cli_error)?;
     bar.finish_and_clear();
-    let regressions =
-        write_report(&report, &registry, &a.out, baseline.as_ref()).map_err(cli_error)?;
+    let staging = gartowen_bench::report::staging_dir(&a.out);
+    crate::cleanup::register(&staging);
+    let written = write_report(&report, &registry, &a.out, baseline.as_ref());
+    crate::cleanup::unregister(&staging);
+    let regressions = written.map_err(cli_error)?;
     let misses = report.missed_slopes();
     crate::outln!(
         "report in {} ({} methods, {:.1} s); scrambled methods missing the predicted slope: {}",
