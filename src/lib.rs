@@ -24,7 +24,7 @@ pub mod verify {
     pub use gartowen_verify::battery::*;
     pub use gartowen_verify::law::{Requirement, SubTest};
     pub use gartowen_verify::sampling::SeedBuilder;
-    pub use gartowen_verify::{dimensions, joint, laws, marginal, pair_lemma, stats};
+    pub use gartowen_verify::{dimensions, joint, laws, marginal, nets, pair_lemma, stats};
 }
 
 /// Every scrambler gartowen knows, in one list; cross-checks iterate over it.

@@ -93,3 +93,75 @@ fn oracle_variants_in_every_base_keep_sz16_base_16_nets() {
         );
     }
 }
+
+/// The battery's nets check in every base: each registry entry, built with every default base,
+/// keeps the t-values of the nets in its own base and in every base 2^(kq) it is nested in
+/// (Faure over GF(2^r) in bases 8, 32, 64, 128 and 256).
+#[test]
+fn every_registered_scrambler_keeps_nets_in_every_base_it_is_nested_in() {
+    use gartowen::verify::nets::{check_base, nested_bases};
+    use gartowen::verify::Level;
+    let registry = gartowen::registry();
+    let mut seen = std::collections::BTreeSet::new();
+    let mut bases_checked = std::collections::BTreeSet::new();
+    for spec in registry.specs() {
+        for q in 1..=8 {
+            let ctx = BuildContext {
+                seed: 3,
+                default_base: PowerOfTwoBase::from_q(q).unwrap(),
+            };
+            let s = (spec.build)(
+                &gartowen::core::ScramblerRequest::parse(spec.name).unwrap(),
+                &ctx,
+            )
+            .unwrap();
+            if !seen.insert((spec.name, s.base().q())) {
+                continue;
+            }
+            for base in nested_bases(s.base()) {
+                bases_checked.insert(base.base());
+                if let Err(e) = check_base(s.as_ref(), Width::W32, base, Level::Quick) {
+                    panic!("{} (base {}): {e}", s.name(), s.base().base());
+                }
+            }
+        }
+    }
+    assert_eq!(
+        bases_checked.into_iter().collect::<Vec<_>>(),
+        vec![2, 4, 8, 16, 32, 64, 128, 256]
+    );
+}
+
+/// Theorem T5's other side: a nested scramble in a base that is not a root of the net's base
+/// may break the net. Base 16 on the base-8 Faure net, base 8 on sz16 and base 4 on the base-8
+/// net each break it on some seed.
+#[test]
+fn a_scrambler_whose_base_the_net_is_not_nested_in_breaks_it_on_an_instance() {
+    use gartowen::oracles::{FullTreeOwen, OwenVariant};
+    use gartowen::verify::nets::check_base;
+    use gartowen::verify::Level;
+    for (scramble_q, net_q) in [(4u32, 3u32), (3, 4), (2, 3)] {
+        let broken = (0..8u64).find_map(|seed| {
+            let s = FullTreeOwen::new(
+                PowerOfTwoBase::from_q(scramble_q).unwrap(),
+                OwenVariant::Uniform,
+                seed,
+            );
+            check_base(
+                &s,
+                Width::W32,
+                PowerOfTwoBase::from_q(net_q).unwrap(),
+                Level::Quick,
+            )
+            .err()
+        });
+        let detail = broken.unwrap_or_else(|| {
+            panic!(
+                "base {} kept every base-{} net",
+                1 << scramble_q,
+                1 << net_q
+            )
+        });
+        assert!(detail.contains("after scrambling, 0 before"), "{detail}");
+    }
+}

@@ -286,7 +286,7 @@ pub fn methods_for(registry: &Registry, sequences: &[SequenceKind]) -> Vec<Metho
             if spec.name == "owen-oracle" {
                 for p in (1..=q).filter(|p| q % p == 0) {
                     out.push(Method {
-                        sequence: kind.name().into(),
+                        sequence: kind.name(),
                         scrambler: format!("owen-oracle:base={}", 1u32 << p),
                     });
                 }
@@ -294,7 +294,7 @@ pub fn methods_for(registry: &Registry, sequences: &[SequenceKind]) -> Vec<Metho
             }
             if q % spec.default_base.q() == 0 {
                 out.push(Method {
-                    sequence: kind.name().into(),
+                    sequence: kind.name(),
                     scrambler: spec.name.to_string(),
                 });
             }

@@ -36,7 +36,11 @@ impl fmt::Display for SeqError {
                 "{sequence} defines at most {max} dimensions, {requested} requested"
             ),
             SeqError::UnknownSequence(name) => {
-                write!(f, "unknown sequence '{name}'; known: sobol, sz4, sz16")
+                write!(
+                    f,
+                    "unknown sequence '{name}'; known: sobol, sz4, sz16, faure:base=B \
+                     (B = 2, 4, …, 256), faure-net:base=B:m=M"
+                )
             }
             SeqError::IndexOutOfRange { index, index_bits } => write!(
                 f,

@@ -10,6 +10,28 @@
 use crate::SeqError;
 use gartowen_core::Gf2Matrix;
 
+/// A field GF(2^q) in some GF(2)-basis, as far as Pascal/Faure generator matrices need it.
+pub trait DigitField {
+    /// Bits per element, q.
+    fn q(&self) -> u32;
+    /// a^n, with a^0 = 1 (also for a = 0).
+    fn pow(&self, a: u32, n: u64) -> u32;
+    /// The binary q×q matrix of x ↦ a·x: column j = a·(basis j), row i = coefficient of basis i.
+    fn mult_matrix(&self, a: u32) -> Gf2Matrix;
+}
+
+impl DigitField for SmallField {
+    fn q(&self) -> u32 {
+        SmallField::q(*self)
+    }
+    fn pow(&self, a: u32, n: u64) -> u32 {
+        SmallField::pow(*self, a, n)
+    }
+    fn mult_matrix(&self, a: u32) -> Gf2Matrix {
+        SmallField::mult_matrix(*self, a)
+    }
+}
+
 /// One of the fields GF(2^q), q ∈ {1, 2, 4}.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum SmallField {

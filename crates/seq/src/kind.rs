@@ -1,10 +1,10 @@
 //! The built-in sequences by name.
 
-use crate::{sobol, sz, DigitalSequence, SeqError};
+use crate::{faure, sobol, sz, DigitalSequence, SeqError};
 use gartowen_core::{PowerOfTwoBase, Width};
 use std::str::FromStr;
 
-/// A built-in sequence: `sobol`, `sz4` or `sz16`.
+/// A built-in sequence: `sobol`, `sz4`, `sz16`, `faure:base=B` or `faure-net:base=B:m=M`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum SequenceKind {
     /// Sobol with Joe–Kuo 6.21201 direction numbers (base 2).
@@ -13,18 +13,32 @@ pub enum SequenceKind {
     Sz4,
     /// SZ-style (0,16)-sequence in base 16, 16 dimensions.
     Sz16,
+    /// The Faure (0,b)-sequence over GF(b), b = 2^q, q = 1..8 ([`faure::faure`]).
+    Faure(PowerOfTwoBase),
+    /// The (0,m,b+1)-net in base b: i/b^m, then the Faure sequence ([`faure::faure_net`]).
+    FaureNet(PowerOfTwoBase, u32),
 }
 
 impl SequenceKind {
-    /// Every built-in sequence.
+    /// The fixed built-in sequences (the Faure families take a base; see
+    /// [`SequenceKind::faure_all`]).
     pub const ALL: [SequenceKind; 3] = [SequenceKind::Sobol, SequenceKind::Sz4, SequenceKind::Sz16];
 
+    /// The Faure sequence in every base 2^q, q = 1..8.
+    pub fn faure_all() -> Vec<SequenceKind> {
+        (1..=8)
+            .map(|q| SequenceKind::Faure(PowerOfTwoBase::from_q(q).expect("q ≤ 8")))
+            .collect()
+    }
+
     /// The command-line name.
-    pub fn name(self) -> &'static str {
+    pub fn name(self) -> String {
         match self {
-            SequenceKind::Sobol => "sobol",
-            SequenceKind::Sz4 => "sz4",
-            SequenceKind::Sz16 => "sz16",
+            SequenceKind::Sobol => "sobol".into(),
+            SequenceKind::Sz4 => "sz4".into(),
+            SequenceKind::Sz16 => "sz16".into(),
+            SequenceKind::Faure(b) => faure::faure_name(b),
+            SequenceKind::FaureNet(b, m) => format!("faure-net:base={}:m={m}", b.base()),
         }
     }
 
@@ -34,6 +48,7 @@ impl SequenceKind {
             SequenceKind::Sobol => PowerOfTwoBase::B2,
             SequenceKind::Sz4 => PowerOfTwoBase::B4,
             SequenceKind::Sz16 => PowerOfTwoBase::B16,
+            SequenceKind::Faure(b) | SequenceKind::FaureNet(b, _) => b,
         }
     }
 
@@ -43,6 +58,8 @@ impl SequenceKind {
             SequenceKind::Sobol => sobol::MAX_DIMS,
             SequenceKind::Sz4 => sz::SZ4_DIMS,
             SequenceKind::Sz16 => sz::SZ16_DIMS,
+            SequenceKind::Faure(b) => faure::faure_max_dims(b),
+            SequenceKind::FaureNet(b, _) => faure::faure_max_dims(b) + 1,
         }
     }
 
@@ -52,16 +69,105 @@ impl SequenceKind {
             SequenceKind::Sobol => sobol::sequence(dims, width),
             SequenceKind::Sz4 => sz::sz4(dims, width),
             SequenceKind::Sz16 => sz::sz16(dims, width),
+            SequenceKind::Faure(b) => faure::faure(b, dims, width),
+            SequenceKind::FaureNet(b, m) => faure::faure_net(b, m, dims, width),
         }
     }
+}
+
+/// The value of `key=V` among `parts`, once; an error names a repeated, unknown or bad key.
+fn parameters(name: &str, parts: &[&str], keys: &[&str]) -> Result<Vec<u64>, SeqError> {
+    let bad = |why: String| SeqError::UnknownSequence(format!("{name} ({why})"));
+    let mut values: Vec<Option<u64>> = vec![None; keys.len()];
+    for part in parts {
+        let (k, v) = part
+            .split_once('=')
+            .ok_or_else(|| bad(format!("'{part}' is not key=value")))?;
+        let i = keys
+            .iter()
+            .position(|x| *x == k)
+            .ok_or_else(|| bad(format!("unknown parameter '{k}'")))?;
+        if values[i].is_some() {
+            return Err(bad(format!("'{k}' given twice")));
+        }
+        values[i] = Some(
+            v.parse()
+                .map_err(|_| bad(format!("'{v}' is not a number")))?,
+        );
+    }
+    keys.iter()
+        .zip(values)
+        .map(|(k, v)| v.ok_or_else(|| bad(format!("'{k}=' is required"))))
+        .collect()
 }
 
 impl FromStr for SequenceKind {
     type Err = SeqError;
     fn from_str(s: &str) -> Result<Self, SeqError> {
-        SequenceKind::ALL
-            .into_iter()
-            .find(|k| k.name() == s)
-            .ok_or_else(|| SeqError::UnknownSequence(s.to_string()))
+        if let Some(k) = SequenceKind::ALL.into_iter().find(|k| k.name() == s) {
+            return Ok(k);
+        }
+        let mut parts = s.split(':');
+        let head = parts.next().unwrap_or("");
+        let rest: Vec<&str> = parts.collect();
+        let base = |b: u64| {
+            PowerOfTwoBase::from_base(b).map_err(|_| {
+                SeqError::UnknownSequence(format!("{s} (base {b} is not 2, 4, 8, …, 256)"))
+            })
+        };
+        match head {
+            "faure" => {
+                let v = parameters(s, &rest, &["base"])?;
+                Ok(SequenceKind::Faure(base(v[0])?))
+            }
+            "faure-net" => {
+                let v = parameters(s, &rest, &["base", "m"])?;
+                let b = base(v[0])?;
+                let m = u32::try_from(v[1])
+                    .ok()
+                    .filter(|m| (1..=64 / b.q()).contains(m))
+                    .ok_or_else(|| {
+                        SeqError::UnknownSequence(format!(
+                            "{s} (m must be 1..{} in base {})",
+                            64 / b.q(),
+                            b.base()
+                        ))
+                    })?;
+                Ok(SequenceKind::FaureNet(b, m))
+            }
+            _ => Err(SeqError::UnknownSequence(s.to_string())),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_parse_back_and_bad_parameters_are_named() {
+        let mut kinds = SequenceKind::ALL.to_vec();
+        kinds.extend(SequenceKind::faure_all());
+        kinds.push(SequenceKind::FaureNet(PowerOfTwoBase::B8, 3));
+        for k in kinds {
+            assert_eq!(k.name().parse::<SequenceKind>().unwrap(), k);
+        }
+        assert_eq!(
+            "faure:base=256".parse::<SequenceKind>().unwrap().max_dims(),
+            256
+        );
+        for (bad, fragment) in [
+            ("faure", "'base=' is required"),
+            ("faure:base=6", "base 6"),
+            ("faure:base=8:base=8", "given twice"),
+            ("faure:b=8", "unknown parameter 'b'"),
+            ("faure:base=x", "not a number"),
+            ("faure-net:base=8", "'m=' is required"),
+            ("faure-net:base=8:m=0", "m must be 1..21"),
+            ("halton", "unknown sequence 'halton'"),
+        ] {
+            let e = bad.parse::<SequenceKind>().unwrap_err().to_string();
+            assert!(e.contains(fragment), "{bad}: {e}");
+        }
     }
 }

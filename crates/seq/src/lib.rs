@@ -5,6 +5,7 @@
 //! with row 0 in the most significant bit; point n has x_j(n) = XOR of the columns c of C_j
 //! over the set bits c of n (bit 0 = least significant bit of the index).
 
+pub mod binary_field;
 mod digital;
 mod error;
 pub mod faure;

@@ -5,8 +5,9 @@
 //! Checks per implementation:
 //! * `inverse`: `unscramble(scramble(x)) = x` on 10^4 (quick) or 10^5 (full) seeded words;
 //! * `nested`: the inspector, exhaustive at 16 bits (probes at 32 bits where 16 is unsupported);
-//! * `nets`: Sobol (base 2), sz4 (base 4) or sz16 (base 16) scrambled in its own base keeps the
-//!   t-value the rank path gives for the unscrambled matrices, for every m up to a level bound;
+//! * `nets` ([`crate::nets`]): a net in the scrambler's base and in every base 2^(kq) it is
+//!   nested in (Sobol, sz4, sz16, Faure over GF(2^r)) keeps the t-value the rank path gives
+//!   for the unscrambled matrices, for every m up to a level bound;
 //! * the laws ([`crate::laws`]): `node-law` (marginal, by depth), `pair-law`, `flip-rank`,
 //!   `collisions` (joint), `pair-lemma` and `dimensions`. Each sub-test states what it requires
 //!   (a marginal law or independence), its p-value, and its power; a check gets a verdict only
@@ -20,9 +21,7 @@ use crate::stats::{bonferroni, min_detectable_w, FAMILY_ALPHA};
 use gartowen_core::{
     BuildContext, Claim, CoreError, PowerOfTwoBase, Registry, Scrambler, SplitMix64, Width,
 };
-use gartowen_netcheck::{counting::t_value, rank, CheckBase, PointSet};
 use gartowen_oracles::inspector::{inspect_exhaustive, inspect_probes_batched};
-use gartowen_seq::SequenceKind;
 use serde::Serialize;
 use std::time::Instant;
 
@@ -246,23 +245,6 @@ fn check_nested(s: &dyn Scrambler) -> (Verdict, String, Option<f64>) {
 }
 
 fn check_nets(s: &dyn Scrambler, level: Level) -> (Verdict, String, Option<f64>) {
-    let (kind, dims, max_m): (SequenceKind, Vec<usize>, u32) = match (s.base().base(), level) {
-        (2, Level::Quick) => (SequenceKind::Sobol, vec![0, 1, 2], 10),
-        (2, Level::Full) => (SequenceKind::Sobol, vec![0, 1, 2], 14),
-        (2, Level::Exhaustive) => (SequenceKind::Sobol, vec![0, 1, 2], 16),
-        (4, Level::Quick) => (SequenceKind::Sz4, vec![0, 1, 2, 3], 5),
-        (4, Level::Full) => (SequenceKind::Sz4, vec![0, 1, 2, 3], 7),
-        (4, Level::Exhaustive) => (SequenceKind::Sz4, vec![0, 1, 2, 3], 8),
-        (16, Level::Quick) => (SequenceKind::Sz16, vec![0, 5, 10, 15], 3),
-        (16, Level::Full | Level::Exhaustive) => (SequenceKind::Sz16, vec![0, 5, 10, 15], 4),
-        (b, _) => {
-            return (
-                Verdict::Skipped,
-                format!("no built-in sequence in base {b}"),
-                None,
-            )
-        }
-    };
     let width = working_width(s);
     if !s.supports_width(width) {
         return (
@@ -271,47 +253,8 @@ fn check_nets(s: &dyn Scrambler, level: Level) -> (Verdict, String, Option<f64>)
             None,
         );
     }
-    let seq = kind
-        .build(dims.iter().max().unwrap() + 1, width)
-        .expect("built-in");
-    let q = kind.base().q();
-    for m in 1..=max_m {
-        let expected = rank::t_value(&seq, &dims, q, m).expect("rank path");
-        let n = 1u64 << (q * m);
-        let columns = dims
-            .iter()
-            .map(|&j| {
-                let mut column: Vec<u64> = (0..n).map(|i| seq.point(i, j)).collect();
-                s.scramble_batch(&mut column, width, j as u32);
-                column
-            })
-            .collect();
-        let p = PointSet::from_columns(width, columns).expect("points");
-        let got = t_value(
-            &p,
-            CheckBase::new(kind.base().base() as u64).expect("base"),
-            m,
-        )
-        .expect("t-value");
-        if got != expected {
-            return (
-                Verdict::Fail,
-                format!(
-                    "{} dims {dims:?}, m = {m}: t = {got} after scrambling, {expected} before",
-                    kind.name()
-                ),
-                None,
-            );
-        }
-    }
-    (
-        Verdict::Pass,
-        format!(
-            "{} dims {dims:?} keep their t-values for m ≤ {max_m}",
-            kind.name()
-        ),
-        None,
-    )
+    let (verdict, detail) = crate::nets::check_nets(s, width, level);
+    (verdict, detail, None)
 }
 
 /// Which part of the list to run: shard `index` (1-based) of `count`; implementation k goes to

@@ -339,7 +339,7 @@ pub struct CollisionPlan {
 pub const COLLISION_WORDS_PER_DEPTH: u64 = 1 << 19;
 
 /// Plans the collision test, or None when no subtree height makes collisions rare enough
-/// within 4096 words per node.
+/// within 4096 words per node, or failing that within 65,536.
 pub fn collision_plan(cfg: &LawConfig) -> Option<CollisionPlan> {
     let tree = &cfg.tree;
     let (b, q) = (tree.b() as u64, tree.q());
@@ -347,13 +347,19 @@ pub fn collision_plan(cfg: &LawConfig) -> Option<CollisionPlan> {
     let seeds = 2 * cfg.scale.min(4);
     let log2_group = cfg.group().log2_order(q);
     let pairs_log2 = ((nodes_cap * nodes_cap / 2) as f64 * seeds as f64 * 16.0).log2();
-    let height = (1..=12u32).find(|&h| {
-        let words = b.checked_pow(h).unwrap_or(u64::MAX);
-        let n_nodes = (words - 1) / (b - 1);
-        words <= 4096
-            && n_nodes as f64 * log2_group - (h * q) as f64 >= 40.0 + pairs_log2
-            && h < tree.full_digits()
-    })?;
+    let rare_within = |cap: u64| {
+        (1..=12u32).find(|&h| {
+            let words = b.checked_pow(h).unwrap_or(u64::MAX);
+            let n_nodes = (words - 1) / (b - 1);
+            words <= cap
+                && n_nodes as f64 * log2_group - (h * q) as f64 >= 40.0 + pairs_log2
+                && h < tree.full_digits()
+        })
+    };
+    // Small subtrees first; where none is rare enough (translations or affine maps in bases
+    // 128 and 256, whose one-level subtrees coincide too often), subtrees of up to 2^16 words,
+    // with fewer nodes per depth (the memory bound below).
+    let height = rare_within(4096).or_else(|| rare_within(1 << 16))?;
     let log2_pair_probability =
         (height * q) as f64 - ((b.pow(height) - 1) / (b - 1)) as f64 * log2_group;
     // Memory: at most COLLISION_WORDS_PER_DEPTH words per depth and seed.

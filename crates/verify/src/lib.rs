@@ -23,6 +23,7 @@ pub mod junit;
 pub mod law;
 pub mod laws;
 pub mod marginal;
+pub mod nets;
 pub mod pair_lemma;
 pub mod pipe_holders;
 pub mod sampling;

@@ -1,0 +1,104 @@
+//! The battery's `nets` check: a nested scramble in base b = 2^q keeps the t-value of every
+//! digital net in base b and in every base b^k = 2^(kq) ≤ 256 (theorem T2 with T4: a prefix
+//! of j digits in base b^k is a prefix of jk digits in base b, so an elementary interval of
+//! base b^k is mapped onto one of the same shape, one to one).
+//!
+//! Sequences per base: Sobol in base 2, sz4 in base 4, sz16 in base 16, and the Faure
+//! sequence over GF(2^r) in bases 8, 32, 64, 128 and 256 (`faure:base=B`). Each is scrambled
+//! dimension by dimension, cut to b^m points for every m up to a size bound of the level, and
+//! its t-value by the counting path must equal the rank path's t-value for the unscrambled
+//! generator matrices.
+//!
+//! Word tails: with W-bit words a net of B^m points has r·m ≤ W index bits, so every box ends
+//! at or above bit W − r·m and a partial last digit (the 2-bit tail of base 8 in 32-bit
+//! words) never enters one. The scramble still acts on the whole word, so a scrambler whose
+//! tail handling disturbs a full digit is caught here; the tail digit itself is checked by
+//! `nested` (16-bit words: base 8 has a 1-bit tail there).
+
+use crate::battery::{Level, Verdict};
+use gartowen_core::{PowerOfTwoBase, Scrambler, Width};
+use gartowen_netcheck::{counting::t_value, rank, CheckBase, PointSet};
+use gartowen_seq::SequenceKind;
+
+/// The sequence and dimensions the check uses in base `base`.
+pub fn net_sequence(base: PowerOfTwoBase) -> (SequenceKind, Vec<usize>) {
+    match base.base() {
+        2 => (SequenceKind::Sobol, vec![0, 1, 2]),
+        4 => (SequenceKind::Sz4, vec![0, 1, 2, 3]),
+        16 => (SequenceKind::Sz16, vec![0, 5, 10, 15]),
+        b => (SequenceKind::Faure(base), vec![0, 1, b as usize - 1]),
+    }
+}
+
+/// log2 of the most points a net of the level has.
+fn max_log2_points(level: Level) -> u32 {
+    match level {
+        Level::Quick => 12,
+        Level::Full => 16,
+        Level::Exhaustive => 18,
+    }
+}
+
+/// Every base 2^(kq) ≤ 256 a base-2^q scramble is nested in, its own first.
+pub fn nested_bases(base: PowerOfTwoBase) -> Vec<PowerOfTwoBase> {
+    let q = base.q();
+    (1..=8 / q)
+        .map(|k| PowerOfTwoBase::from_q(k * q).expect("k·q ≤ 8"))
+        .collect()
+}
+
+/// The largest m the check uses in `base` at `level`: b^m within the level's size, but at
+/// least 2 (in base 256, 65,536 points), so every base has boxes in two coordinates at once.
+pub fn max_m(base: PowerOfTwoBase, level: Level) -> u32 {
+    (max_log2_points(level) / base.q()).max(2)
+}
+
+/// One base's net check: `Ok(summary)` when every m keeps its t-value, `Err(detail)` naming
+/// the first m that does not.
+pub fn check_base(
+    s: &dyn Scrambler,
+    width: Width,
+    base: PowerOfTwoBase,
+    level: Level,
+) -> Result<String, String> {
+    let (kind, dims) = net_sequence(base);
+    let seq = kind
+        .build(dims.iter().max().expect("dims") + 1, width)
+        .expect("built-in sequence");
+    let r = base.q();
+    let top = max_m(base, level);
+    for m in 1..=top {
+        let expected = rank::t_value(&seq, &dims, r, m).expect("rank path");
+        let n = 1u64 << (r * m);
+        let columns = dims
+            .iter()
+            .map(|&j| {
+                let mut column: Vec<u64> = (0..n).map(|i| seq.point(i, j)).collect();
+                s.scramble_batch(&mut column, width, j as u32);
+                column
+            })
+            .collect();
+        let p = PointSet::from_columns(width, columns).expect("points");
+        let got =
+            t_value(&p, CheckBase::new(base.base() as u64).expect("base"), m).expect("t-value");
+        if got != expected {
+            return Err(format!(
+                "{} dims {dims:?}, m = {m}: t = {got} after scrambling, {expected} before",
+                kind.name()
+            ));
+        }
+    }
+    Ok(format!("{} dims {dims:?} m ≤ {top}", kind.name()))
+}
+
+/// The `nets` check: every base the scrambler is nested in.
+pub fn check_nets(s: &dyn Scrambler, width: Width, level: Level) -> (Verdict, String) {
+    let mut kept = Vec::new();
+    for base in nested_bases(s.base()) {
+        match check_base(s, width, base, level) {
+            Ok(summary) => kept.push(summary),
+            Err(detail) => return (Verdict::Fail, detail),
+        }
+    }
+    (Verdict::Pass, format!("t-values kept: {}", kept.join("; ")))
+}
