@@ -212,12 +212,21 @@ mod tests {
     }
 
     #[test]
+    fn the_report_table_has_the_stated_rounds() {
+        let registry = gartowen::registry();
+        let rows = measure_speed(&registry, true);
+        assert_eq!(rows.len(), registry.specs().len());
+        assert!(rows.iter().all(|r| r.ratio_rounds.len() == ROUNDS_QUICK));
+    }
+
+    #[test]
     fn median_of_odd_even_and_empty() {
         assert_eq!(median(&[3.0, 1.0, 2.0]), 2.0);
         assert_eq!(median(&[4.0, 1.0, 3.0, 2.0]), 2.5);
         assert!(median(&[]).is_nan());
         // One wild round in five does not move it.
-        assert_eq!(median(&[2.0, 2.1, 9.0, 1.9, 2.0]), 2.0);
+        assert_eq!(median(&[2.0, 2.1, 9.0, 1.9, 2.05]), 2.05);
+        assert_eq!(median(&[5.0, 1.0, 50.0, 4.0, 3.0, 2.0, 6.0]), 4.0);
     }
 
     #[test]
@@ -235,6 +244,8 @@ mod tests {
         let scaled: Vec<f64> = r.iter().map(|x| x * 7.0).collect();
         assert!((log_ratio_standard_error(&scaled) - se).abs() < 1e-12);
         assert_eq!(log_ratio_standard_error(&[1.0, 2.0]), 0.0);
+        // Three rounds are enough to estimate a spread.
+        assert!(log_ratio_standard_error(&[1.0, 2.0, 4.0]) > 0.0);
         assert_eq!(log_ratio_standard_error(&[2.0; 6]), 0.0);
     }
 
