@@ -6,6 +6,7 @@ use gartowen_netcheck::counting::{
     self, check_net_with_progress, check_sequence_with_progress, histograms, implied_m,
     t_value_with_witness,
 };
+use gartowen_netcheck::snap::{snap_to_grid, SnapSummary};
 use gartowen_netcheck::{BoxFailure, CheckBase, PointSet, ProjectionSpec};
 use serde_json::{json, Value};
 use std::borrow::Cow;
@@ -78,6 +79,50 @@ pub fn describe_failure(f: &BoxFailure, base: u64) -> String {
         },
         f.count,
         f.expected
+    )
+}
+
+/// The error radius [`snap_floats`] allows binary64 values in [0, 1): 2^-46, 64 units in the
+/// last place at [1/2, 1). A correctly rounded value is off by half a unit; tools that sum
+/// digit terms in floats are off by a few (SciPy's unscrambled Halton by up to about 2.2).
+pub const F64_RADIUS_LOG2: u32 = 46;
+
+/// Float input in a base that is not a power of two, snapped to the base's grid at the
+/// check's depth (`q.m`, else the largest m with b^m ≤ N) by the rule of
+/// [`gartowen_netcheck::snap`]. Powers of two need no snapping (a binary float is exact in
+/// them): the set comes back unchanged with `None`. An error names the ambiguous point, or
+/// says that the precision does not reach the depth.
+pub fn snap_floats<'a>(
+    points: &'a PointSet,
+    base: CheckBase,
+    q: &NetQuery,
+) -> Result<(Cow<'a, PointSet>, Option<SnapSummary>), String> {
+    if base.log2().is_some() {
+        return Ok((Cow::Borrowed(points), None));
+    }
+    let b = base.get();
+    let depth = q.m.unwrap_or_else(|| {
+        let (mut m, mut bm) = (0u32, 1u128);
+        while bm * b as u128 <= points.len() as u128 {
+            bm *= b as u128;
+            m += 1;
+        }
+        m
+    });
+    match snap_to_grid(points, b, depth.max(1), F64_RADIUS_LOG2).map_err(|e| e.to_string())? {
+        Ok((set, summary)) => Ok((Cow::Owned(set), Some(summary))),
+        Err(ambiguous) => Err(format!(
+            "{ambiguous}; refused rather than read in a box it may not belong to"
+        )),
+    }
+}
+
+/// The line the text report gains when floats were snapped.
+pub fn snap_note(s: &SnapSummary, coordinates: usize) -> String {
+    format!(
+        "floats snapped to the base-{} grid of depth {}: {} of {coordinates} coordinates \
+         moved by at most 2^-{} (a float cannot hold most multiples of {}^-{})\n",
+        s.base, s.digits, s.snapped, s.radius_log2, s.base, s.digits
     )
 }
 

@@ -207,6 +207,7 @@ def check(
     projections: Optional[str] = None,
     sequence: bool = False,
     histograms: bool = False,
+    snap: bool = True,
 ) -> CheckResult:
     """Net properties of a point set by counting points in elementary intervals.
 
@@ -221,6 +222,10 @@ def check(
         projections: ``"pairs"``, ``"groups:G"``, ``"blocks:G"`` or lists like ``"0,1;2,3"``.
         sequence: check the (t,s)-sequence property over every block of b^k points, k <= m.
         histograms: include per-shape count histograms (with ``t``, nets only).
+        snap: float64 input in a base that is not a power of two is snapped to the base's grid
+            (``gartowen check`` without ``--no-snap``): a coordinate within 2^-46 of a multiple
+            of b^-m counts as that multiple, one between 2^-46 and 2^-44 is refused
+            (ValueError naming the point). ``False`` reads floats by floor.
 
     Returns:
         A :class:`CheckResult`, the same as ``gartowen check --json`` on the same points.
@@ -232,7 +237,7 @@ def check(
     if projections is not None:
         projections = _string("projections", projections)
     text, holds, report = _native.check(
-        array, base, m, t, projections, bool(sequence), bool(histograms)
+        array, base, m, t, projections, bool(sequence), bool(histograms), bool(snap)
     )
     cert = json.loads(text)
     result = cert["result"]

@@ -50,8 +50,14 @@ impl InputPoints {
     }
 }
 
-/// Reads `obj` (named `what` in messages) as points.
+/// Reads `obj` (named `what` in messages) as points, float64 values exactly.
 pub fn read_points(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<InputPoints> {
+    read_points_as(obj, what, false)
+}
+
+/// Reads `obj` as points; with `floor`, a float64 value becomes the 64-bit word at or below it
+/// (exact for every box of depth ≤ 64 bits: the net check), else it must be a multiple of 2^-64.
+pub fn read_points_as(obj: &Bound<'_, PyAny>, what: &str, floor: bool) -> PyResult<InputPoints> {
     let py = obj.py();
     let array = obj.cast::<PyUntypedArray>().map_err(|_| {
         PyTypeError::new_err(format!(
@@ -84,7 +90,12 @@ pub fn read_points(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<InputPoints> 
         let view = a.as_array();
         let mut words = Vec::with_capacity(n * dims);
         for (k, &v) in view.iter().enumerate() {
-            let w = gartowen::core::word_from_f64(v, Width::W64).map_err(|e| {
+            let w = if floor {
+                gartowen::core::word_from_f64_floor(v)
+            } else {
+                gartowen::core::word_from_f64(v, Width::W64)
+            }
+            .map_err(|e| {
                 PyValueError::new_err(format!(
                     "{what}: point {}, dimension {}: {e}",
                     k / dims,

@@ -152,7 +152,7 @@ fn scramble<'py>(
 
 /// `gartowen check --json` on an array: the certificate JSON text and whether it holds.
 #[pyfunction]
-#[pyo3(signature = (points, base, m, t, projections, sequence, histograms))]
+#[pyo3(signature = (points, base, m, t, projections, sequence, histograms, snap))]
 #[allow(clippy::too_many_arguments)]
 fn check(
     py: Python<'_>,
@@ -163,9 +163,12 @@ fn check(
     projections: Option<String>,
     sequence: bool,
     histograms: bool,
+    snap: bool,
 ) -> PyResult<(String, bool, String)> {
     let check_base = CheckBase::new(base).map_err(value_error)?;
-    let set = read_points(points, "points")?.point_set()?;
+    let input = arrays::read_points_as(points, "points", true)?;
+    let floats = matches!(input.element, arrays::Element::F64);
+    let read = input.point_set()?;
     let query = NetQuery {
         m,
         t,
@@ -173,9 +176,22 @@ fn check(
         projections: projections.clone(),
         histograms,
     };
-    let outcome = py
+    let (set, snapped) = if floats && snap {
+        gartowen::net_check::snap_floats(&read, check_base, &query)
+            .map_err(PyValueError::new_err)?
+    } else {
+        (std::borrow::Cow::Borrowed(&read), None)
+    };
+    let mut outcome = py
         .detach(|| check_points(&set, check_base, &query, &Silent))
         .map_err(PyValueError::new_err)?;
+    if let Some(s) = &snapped {
+        outcome.text = gartowen::net_check::snap_note(s, read.len() * read.dims()) + &outcome.text;
+    }
+    let snap_json = snapped.as_ref().map(|s| {
+        json!({ "base": s.base, "depth": s.digits, "snapped": s.snapped,
+                "radius_log2": s.radius_log2 })
+    });
     let cert = Certificate::new(
         "check",
         if outcome.holds {
@@ -186,9 +202,12 @@ fn check(
         json!({
             "base": base, "m": m, "t": t, "sequence": sequence,
             "projections": projections, "histograms": histograms,
+            "snap": snap_json, "no_snap": !snap,
         }),
         vec![],
-        vec![gartowen::reports::point_set_record("array", "points", &set)],
+        vec![gartowen::reports::point_set_record(
+            "array", "points", &read,
+        )],
         outcome.result,
     );
     Ok((cert.to_json(), outcome.holds, outcome.text))

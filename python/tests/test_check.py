@@ -91,3 +91,30 @@ def test_errors_carry_the_cli_message(cli, tmp_path):
         with pytest.raises(ValueError) as info:
             gartowen.check(x, **kwargs)
         assert str(info.value) in err, (str(info.value), err)
+
+
+def test_scipy_halton_floats_check_with_the_right_t_in_bases_3_and_5(cli, tmp_path):
+    """Unscrambled SciPy Halton points (another tool's floats): each coordinate is a (0,m,1)-net
+    in its own base once snapped; read by floor, base 3 is not even a (0,1,1)-net."""
+    qmc = pytest.importorskip("scipy.stats.qmc")
+    x = qmc.Halton(d=3, scramble=False).random(3 ** 8)
+    for m in range(1, 9):
+        assert gartowen.check(x[: 3 ** m, 1], 3, m=m).t == 0, m
+    for m in range(1, 6):
+        assert gartowen.check(x[: 5 ** m, 2], 5, m=m).t == 0, m
+    assert gartowen.check(x[:3, 1], 3, m=1, snap=False).t == 1
+    r = gartowen.check(x[:, 1], 3, m=8)
+    assert r.certificate["parameters"]["snap"]["depth"] == 8
+    # The CLI on the same file says the same.
+    f = tmp_path / "halton.npy"
+    np.save(f, np.ascontiguousarray(x[:, 1]))
+    code, doc = cli.json("check", f, "--base", 3, "--m", 8, "--t", 0, "--json")
+    assert code == 0 and doc["result"]["holds"]
+
+
+def test_floats_rounded_coarser_than_float_error_are_refused():
+    x = np.array([0.0, 1 / 3, 2 / 3])
+    coarse = np.floor(x * 2.0 ** 44) / 2.0 ** 44
+    with pytest.raises(ValueError, match="point 1 coordinate 0"):
+        gartowen.check(coarse, 3, m=1)
+    assert gartowen.check(x, 3, m=1).t == 0

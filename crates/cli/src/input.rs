@@ -67,6 +67,34 @@ fn bad(path: &Path, msg: impl std::fmt::Display) -> CliError {
 
 /// Reads a point set.
 pub fn read_points(path: &Path, format: InputFormat) -> Result<PointSet, CliError> {
+    read_points_typed(path, format, FloatWords::Exact).map(|(p, _)| p)
+}
+
+/// How float values become 64-bit words.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FloatWords {
+    /// Exactly, refusing values that are not multiples of 2^-64 (exact arithmetic needs it).
+    Exact,
+    /// The word at or below the value: exact for every box of depth ≤ 64 bits (the checker).
+    Floor,
+}
+
+impl FloatWords {
+    fn word(self, v: f64) -> Result<u64, gartowen::core::CoreError> {
+        match self {
+            FloatWords::Exact => gartowen::core::word_from_f64(v, Width::W64),
+            FloatWords::Floor => gartowen::core::word_from_f64_floor(v),
+        }
+    }
+}
+
+/// Reads a point set and whether its file held floats (CSV values or float64 `.npy`,
+/// converted to 64-bit words as `floats` says) rather than words.
+pub fn read_points_typed(
+    path: &Path,
+    format: InputFormat,
+    floats: FloatWords,
+) -> Result<(PointSet, bool), CliError> {
     let format = match format {
         InputFormat::Auto => match path.extension().and_then(|e| e.to_str()) {
             Some("npy") => InputFormat::Npy,
@@ -82,13 +110,13 @@ pub fn read_points(path: &Path, format: InputFormat) -> Result<PointSet, CliErro
         f => f,
     };
     if format == InputFormat::Npy {
-        return read_npy_file(path);
+        return read_npy_file(path, floats);
     }
     let bytes = read_bounded(path)?;
     match format {
-        InputFormat::Npy => read_npy(path, &bytes),
-        InputFormat::Csv => read_csv(path, &bytes),
-        InputFormat::Hex => read_hex(path, &bytes),
+        InputFormat::Npy => read_npy(path, &bytes, floats),
+        InputFormat::Csv => read_csv(path, &bytes, floats).map(|p| (p, true)),
+        InputFormat::Hex => read_hex(path, &bytes).map(|p| (p, false)),
         InputFormat::Auto => unreachable!(),
     }
 }
@@ -167,21 +195,27 @@ fn npy_declared_shape(bytes: &[u8]) -> Result<(Vec<u64>, usize), String> {
     Ok((shape, end))
 }
 
-fn read_npy(path: &Path, bytes: &[u8]) -> Result<PointSet, CliError> {
+fn read_npy(path: &Path, bytes: &[u8], floats: FloatWords) -> Result<(PointSet, bool), CliError> {
     let (_, end) = npy_declared_shape(bytes).map_err(|e| bad(path, e))?;
-    decode_npy(path, &bytes[..end], bytes.len() - end, &bytes[end..])
+    decode_npy(
+        path,
+        &bytes[..end],
+        bytes.len() - end,
+        &bytes[end..],
+        floats,
+    )
 }
 
 /// Reads a regular .npy file header first, then its data straight into the point set's
 /// columns (the file's bytes are never held whole); other files go through [`read_npy`].
-fn read_npy_file(path: &Path) -> Result<PointSet, CliError> {
+fn read_npy_file(path: &Path, floats: FloatWords) -> Result<(PointSet, bool), CliError> {
     use std::io::Read;
     let cannot = |e: std::io::Error| CliError::Io(format!("cannot read {}: {e}", path.display()));
     let file = std::fs::File::open(path).map_err(cannot)?;
     let meta = file.metadata().map_err(cannot)?;
     if !meta.is_file() || meta.len() > MAX_INPUT_BYTES {
         let bytes = read_bounded(path)?;
-        return read_npy(path, &bytes);
+        return read_npy(path, &bytes, floats);
     }
     let total = meta.len() as usize;
     let mut reader = std::io::BufReader::with_capacity(1 << 20, file);
@@ -194,10 +228,10 @@ fn read_npy_file(path: &Path) -> Result<PointSet, CliError> {
             12 + u32::from_le_bytes([header[8], header[9], header[10], header[11]]) as usize
         }
         // Let the byte-level parser name what is wrong.
-        _ => return read_npy(path, &header),
+        _ => return read_npy(path, &header, floats),
     };
     if header_len > total {
-        return read_npy(path, &header);
+        return read_npy(path, &header, floats);
     }
     let already = header.len();
     header.resize(header_len.max(already), 0);
@@ -205,7 +239,7 @@ fn read_npy_file(path: &Path) -> Result<PointSet, CliError> {
     let (_, end) = npy_declared_shape(&header).map_err(|e| bad(path, e))?;
     // Bytes of a v1 header read past its end belong to the data.
     let (head, early) = header.split_at(end);
-    decode_npy(path, head, total - end, early.chain(reader))
+    decode_npy(path, head, total - end, early.chain(reader), floats)
 }
 
 /// Decodes a .npy file from its header bytes and a reader of its `data_len` data bytes.
@@ -214,7 +248,8 @@ fn decode_npy(
     bytes: &[u8],
     data_bytes: usize,
     mut data: impl std::io::Read,
-) -> Result<PointSet, CliError> {
+    float_words: FloatWords,
+) -> Result<(PointSet, bool), CliError> {
     let (declared, _) = npy_declared_shape(bytes).map_err(|e| bad(path, e))?;
     let npy =
         npyz::NpyFile::new(bytes).map_err(|e| bad(path, format!("not a valid .npy file: {e}")))?;
@@ -296,7 +331,7 @@ fn decode_npy(
                 (_, false) => u64::from_le_bytes(chunk.try_into().expect("8 bytes")),
                 (_, true) => {
                     let v = f64::from_le_bytes(chunk.try_into().expect("8 bytes"));
-                    gartowen::core::word_from_f64(v, Width::W64).map_err(|e| {
+                    float_words.word(v).map_err(|e| {
                         bad(
                             path,
                             gartowen::netcheck::NetError::BadValue {
@@ -311,7 +346,9 @@ fn decode_npy(
             k += 1;
         }
     }
-    PointSet::from_columns(width, coords).map_err(|e| bad(path, e))
+    PointSet::from_columns(width, coords)
+        .map(|p| (p, floats))
+        .map_err(|e| bad(path, e))
 }
 
 /// Lines that carry data: trimmed, skipping blank lines and '#' comments, with 1-based numbers.
@@ -347,7 +384,7 @@ fn same_width(
     Ok(())
 }
 
-fn read_csv(path: &Path, bytes: &[u8]) -> Result<PointSet, CliError> {
+fn read_csv(path: &Path, bytes: &[u8], floats: FloatWords) -> Result<PointSet, CliError> {
     let text = utf8(path, bytes)?;
     let mut values = Vec::new();
     let mut dims = None;
@@ -362,7 +399,11 @@ fn read_csv(path: &Path, bytes: &[u8]) -> Result<PointSet, CliError> {
         }
     }
     let dims = dims.ok_or_else(|| bad(path, "no data lines"))?;
-    PointSet::from_f64(dims, &values).map_err(|e| bad(path, e))
+    match floats {
+        FloatWords::Exact => PointSet::from_f64(dims, &values),
+        FloatWords::Floor => PointSet::from_f64_floor(dims, &values),
+    }
+    .map_err(|e| bad(path, e))
 }
 
 fn read_hex(path: &Path, bytes: &[u8]) -> Result<PointSet, CliError> {
@@ -464,8 +505,13 @@ mod fuzz {
 
     fn all_readers(bytes: &[u8]) {
         let p = Path::new("fuzz");
-        for r in [read_npy, read_csv, read_hex] {
-            if let Ok(set) = r(p, bytes) {
+        for floats in [FloatWords::Exact, FloatWords::Floor] {
+            let sets = [
+                read_npy(p, bytes, floats).map(|(s, _)| s),
+                read_csv(p, bytes, floats),
+                read_hex(p, bytes),
+            ];
+            for set in sets.into_iter().flatten() {
                 assert!(!set.is_empty() && set.dims() >= 1);
             }
         }
@@ -497,7 +543,7 @@ mod fuzz {
         ] {
             let mut bytes = npy_header("<f8", false, shape);
             bytes.extend_from_slice(&[0u8; 16]);
-            let e = read_npy(Path::new("big.npy"), &bytes).expect_err("refused");
+            let e = read_npy(Path::new("big.npy"), &bytes, FloatWords::Exact).expect_err("refused");
             assert!(e.to_string().contains("big.npy"), "{e}");
         }
     }
@@ -535,7 +581,10 @@ mod fuzz {
 
         #[test]
         fn valid_files_read_back(rows in 1usize..20, dims in 1usize..5, fortran in any::<bool>()) {
-            let set = read_npy(Path::new("ok.npy"), &valid_npy(rows, dims, fortran)).unwrap();
+            let (set, floats) =
+                read_npy(Path::new("ok.npy"), &valid_npy(rows, dims, fortran), FloatWords::Exact)
+                    .unwrap();
+            prop_assert!(floats);
             prop_assert_eq!((set.len(), set.dims()), (rows, dims));
         }
     }

@@ -316,3 +316,68 @@ fn wide_point_sets_are_refused_by_their_memory_estimate_or_checked() {
     assert_eq!(doc["result"]["t"], 0);
     assert_eq!(doc["result"]["s"], 200_000);
 }
+
+/// Halton floats in base 3, as another tool writes them (shortest round-trip decimals): snapped,
+/// a (0,7,1)-net; read by floor (`--no-snap`), not; truncated to 44 bits, refused naming a
+/// point. Values below 2^-11 (not multiples of 2^-64) are read, not refused.
+#[test]
+fn base_3_floats_are_snapped_refused_when_ambiguous_and_floored_on_request() {
+    let dir = tempfile::tempdir().unwrap();
+    let n = 3usize.pow(7);
+    let h = gartowen::seq::radix::halton(n as u64, 2).unwrap();
+    let column: Vec<f64> = h.iter().skip(1).step_by(2).map(|f| f.to_f64()).collect();
+    let write = |name: &str, values: &[f64]| {
+        let text: String = values.iter().map(|v| format!("{v:?}\n")).collect();
+        let path = dir.path().join(name);
+        std::fs::write(&path, text).unwrap();
+        path.to_str().unwrap().to_string()
+    };
+    let exact = write("h3.csv", &column);
+    let o = gartowen(&["check", &exact, "--base", "3", "--t", "0"]);
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{out}{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(
+        out.contains("floats snapped to the base-3 grid of depth 7"),
+        "{out}"
+    );
+    let o = gartowen(&["check", &exact, "--base", "3", "--json"]);
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["result"]["t"], 0);
+    assert_eq!(v["parameters"]["snap"]["depth"], 7);
+    assert!(v["parameters"]["snap"]["snapped"].as_u64().unwrap() > 0);
+    let o = gartowen(&["check", &exact, "--base", "3", "--no-snap", "--json"]);
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(v["result"]["t"].as_u64().unwrap() > 0, "{v}");
+    // Quantized to 44 bits: ambiguous, exit 2, the point named, nothing on stdout.
+    let coarse: Vec<f64> = column
+        .iter()
+        .map(|v| (v * 2f64.powi(44)).floor() / 2f64.powi(44))
+        .collect();
+    let path = write("coarse.csv", &coarse);
+    let o = gartowen(&["check", &path, "--base", "3"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("coordinate 0") && err.contains("point "),
+        "{err}"
+    );
+    assert!(o.stdout.is_empty());
+    // Depth beyond what a float resolves.
+    let o = gartowen(&["check", &exact, "--base", "3", "--m", "28"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("at most 27 base-3 digits"));
+    // A tiny value is read (it used to be refused as "not a multiple of 2^-64").
+    let path = write("tiny.csv", &[0.0, 1e-300, 0.5, 0.75]);
+    let o = gartowen(&["check", &path, "--base", "2", "--m", "2", "--json"]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+}

@@ -68,9 +68,43 @@ pub fn word_from_f64(v: f64, width: Width) -> Result<u64, CoreError> {
     Ok(scaled as u64)
 }
 
+/// ⌊v · 2^64⌋ for v in [0, 1): the 64-bit word at or below v, exact (scaling by 2^64 is exact
+/// in binary64 and the cast truncates). Only values below 2^-11 lose bits, all of them below
+/// 2^-64, which no elementary interval of depth ≤ 64 bits can tell apart; the net checker
+/// reads floats this way, exact arithmetic (discrepancy) through [`word_from_f64`].
+///
+/// ```
+/// use gartowen_core::word_from_f64_floor;
+/// assert_eq!(word_from_f64_floor(0.75), Ok(0xC000_0000_0000_0000));
+/// assert_eq!(word_from_f64_floor(1e-300), Ok(0));
+/// assert!(word_from_f64_floor(1.0).is_err());
+/// ```
+pub fn word_from_f64_floor(v: f64) -> Result<u64, CoreError> {
+    if v.is_nan() {
+        return Err(CoreError::NotANumber);
+    }
+    if !(0.0..1.0).contains(&v) {
+        return Err(CoreError::OutOfUnitInterval(v));
+    }
+    Ok((v * f64::powi(2.0, 64)) as u64)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_floor_word_agrees_with_the_exact_word_where_that_exists() {
+        for v in [0.0, 0.5, 0.75, 2f64.powi(-11), 0.999_999_999_999_999_9] {
+            assert_eq!(word_from_f64_floor(v), word_from_f64(v, Width::W64), "{v}");
+        }
+        let tiny = 2f64.powi(-40) / 3.0;
+        assert!(word_from_f64(tiny, Width::W64).is_err());
+        let w = word_from_f64_floor(tiny).unwrap();
+        // ⌊2^24 / 3⌋ = 5592405.
+        assert_eq!(w, 5_592_405);
+        assert!(word_from_f64_floor(f64::NAN).is_err() && word_from_f64_floor(-0.5).is_err());
+    }
 
     #[test]
     fn truncation_never_reaches_one() {

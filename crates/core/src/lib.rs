@@ -19,7 +19,7 @@ pub mod width;
 pub use claim::{Claim, NodeGroup};
 pub use digits::{DigitLayout, PowerOfTwoBase};
 pub use error::CoreError;
-pub use float::{word_from_f64, word_to_f32, word_to_f64};
+pub use float::{word_from_f64, word_from_f64_floor, word_to_f32, word_to_f64};
 pub use gf2::Gf2Matrix;
 pub use hash::{derive_seed, hash_words, mix64, SplitMix64};
 pub use perm::{fisher_yates, Permutation};

@@ -20,6 +20,7 @@ pub mod projections;
 pub mod rank;
 mod shape_tree;
 pub mod shapes;
+pub mod snap;
 
 pub use base::CheckBase;
 pub use counting::{BoxFailure, NetReport, SequenceFailure, SequenceReport, ShapeHistogram};

@@ -85,6 +85,27 @@ impl PointSet {
         PointSet::from_flat(Width::W64, dims, &words)
     }
 
+    /// From flat row-major f64 values, each read as the 64-bit word at or below it
+    /// ([`gartowen_core::word_from_f64_floor`]: values below 2^-11 lose bits below 2^-64, which
+    /// no box of depth ≤ 64 bits tells apart). Errors name the first NaN or value outside [0,1).
+    pub fn from_f64_floor(dims: usize, values: &[f64]) -> Result<Self, NetError> {
+        if dims == 0 {
+            return Err(NetError::BadShape("points have zero dimensions".into()));
+        }
+        let mut words = Vec::with_capacity(values.len());
+        for (k, &v) in values.iter().enumerate() {
+            let w = gartowen_core::word_from_f64_floor(v).map_err(|e: CoreError| {
+                NetError::BadValue {
+                    point: k / dims,
+                    dim: k % dims,
+                    reason: e.to_string(),
+                }
+            })?;
+            words.push(w);
+        }
+        PointSet::from_flat(Width::W64, dims, &words)
+    }
+
     /// From per-dimension columns (all of equal length).
     pub fn from_columns(width: Width, coords: Vec<Vec<u64>>) -> Result<Self, NetError> {
         let n = coords

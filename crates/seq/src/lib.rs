@@ -12,6 +12,7 @@ pub mod faure;
 pub mod field;
 mod gray;
 mod kind;
+pub mod radix;
 pub mod sobol;
 pub mod sz;
 mod tables;

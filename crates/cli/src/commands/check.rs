@@ -1,10 +1,10 @@
 //! `gartowen check`: net properties of a point file by elementary-interval counting.
 
-use crate::input::{read_points, InputFormat};
+use crate::input::{read_points_typed, FloatWords, InputFormat};
 use crate::CliError;
 use clap::Args;
 use gartowen::certificate::{CertVerdict, Certificate};
-use gartowen::net_check::{check_points, NetOutcome, NetQuery, Progress};
+use gartowen::net_check::{check_points, snap_floats, snap_note, NetOutcome, NetQuery, Progress};
 use gartowen::netcheck::CheckBase;
 use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::{json, Value};
@@ -61,6 +61,10 @@ pub struct CheckArgs {
     /// Worker threads (results are identical for any count; default: all cores).
     #[arg(long)]
     pub threads: Option<usize>,
+    /// Read floats in a base that is not a power of two as they are (floor), without snapping
+    /// them to the base's grid. A float cannot hold 1/3: unsnapped, a base-3 net reads wrong.
+    #[arg(long)]
+    pub no_snap: bool,
 }
 
 /// The most worker threads `--threads` accepts.
@@ -117,8 +121,8 @@ pub fn run(a: CheckArgs) -> Result<ExitCode, CliError> {
             .map_err(usage)?;
     }
     let base = CheckBase::new(a.base).map_err(usage)?;
-    let points = read_points(&a.file, a.format)?;
-    let input = crate::input::file_record(&a.file, &points);
+    let (read, floats) = read_points_typed(&a.file, a.format, FloatWords::Floor)?;
+    let input = crate::input::file_record(&a.file, &read);
     let query = NetQuery {
         m: a.m,
         t: a.t,
@@ -126,11 +130,21 @@ pub fn run(a: CheckArgs) -> Result<ExitCode, CliError> {
         projections: a.projections.clone(),
         histograms: a.histograms,
     };
+    let (points, snapped) = if floats && !a.no_snap {
+        snap_floats(&read, base, &query)
+            .map_err(|e| CliError::Usage(format!("{}: {e}", a.file.display())))?
+    } else {
+        (std::borrow::Cow::Borrowed(&read), None)
+    };
     let NetOutcome {
         holds,
         result,
         text,
     } = check_points(&points, base, &query, &BarProgress::default()).map_err(CliError::Usage)?;
+    let snap_json = snapped.as_ref().map(|s| {
+        json!({ "base": s.base, "depth": s.digits, "snapped": s.snapped,
+                "radius_log2": s.radius_log2 })
+    });
     if let Some(path) = &a.junit {
         crate::output::write_junit(
             path,
@@ -149,6 +163,7 @@ pub fn run(a: CheckArgs) -> Result<ExitCode, CliError> {
             json!({
                 "base": base.get(), "m": a.m, "t": a.t, "sequence": a.sequence,
                 "projections": a.projections, "histograms": a.histograms,
+                "snap": snap_json, "no_snap": a.no_snap,
             }),
             vec![],
             vec![input],
@@ -156,6 +171,9 @@ pub fn run(a: CheckArgs) -> Result<ExitCode, CliError> {
         );
         crate::outln!("{}", cert.to_json());
     } else {
+        if let Some(s) = &snapped {
+            crate::out!("{}", snap_note(s, read.len() * read.dims()));
+        }
         crate::out!("{text}");
     }
     Ok(if holds {
