@@ -3,10 +3,11 @@
 //! Shared by the CLI and the Python package, so both report the same result for one input.
 
 use gartowen_netcheck::counting::{
-    self, check_net_with_progress, check_sequence_with_progress, histograms, implied_m,
-    t_value_with_witness,
+    self, check_net_owned, check_net_with_progress, check_sequence_with_progress, histograms,
+    implied_m, t_value_with_witness,
 };
 use gartowen_netcheck::snap::{snap_to_grid, SnapSummary};
+use gartowen_netcheck::NetReport;
 use gartowen_netcheck::{BoxFailure, CheckBase, PointSet, ProjectionSpec};
 use serde_json::{json, Value};
 use std::borrow::Cow;
@@ -177,6 +178,57 @@ pub fn check_points(
     })
 }
 
+/// [`check_points`] on a set it owns. The one-projection net verdict (`t` given, no
+/// histograms, no projections, not a sequence) frees each dimension's words once its digits
+/// are read ([`check_net_owned`]), which lowers the peak memory; every other query runs as
+/// [`check_points`]. The outcome is the same either way.
+pub fn check_points_owned(
+    points: PointSet,
+    base: CheckBase,
+    q: &NetQuery,
+    progress: &dyn Progress,
+) -> Result<NetOutcome, String> {
+    let Some(t) =
+        q.t.filter(|_| q.projections.is_none() && !q.sequence && !q.histograms)
+    else {
+        return check_points(&points, base, q, progress);
+    };
+    let m = match q.m {
+        Some(m) => m,
+        None => implied_m(&points, base).map_err(|e| e.to_string())?,
+    };
+    let dims: Vec<usize> = (0..points.dims()).collect();
+    let total = gartowen_netcheck::shapes::shape_count(m.saturating_sub(t), dims.len()) as u64;
+    progress.start(total, "shapes");
+    let r =
+        check_net_owned(points, base, m, t, &|k| progress.advance(k)).map_err(|e| e.to_string())?;
+    progress.finish();
+    let (text, result) = net_verdict(&dims, &r, base.get());
+    Ok(NetOutcome {
+        holds: r.holds,
+        result,
+        text,
+    })
+}
+
+/// The text line(s) and JSON of one net verdict on projection `dims`.
+fn net_verdict(dims: &[usize], r: &NetReport, b: u64) -> (String, Value) {
+    let mut text = format!(
+        "dims {dims:?}: ({},{},{})-net in base {b}: {} ({} shapes checked)\n",
+        r.t,
+        r.m,
+        r.dims,
+        if r.holds { "holds" } else { "FAILS" },
+        r.shapes_checked
+    );
+    if let Some(f) = &r.first_failure {
+        text += &format!("  first failure: {}\n", describe_failure(f, b));
+    }
+    let mut v = serde_json::to_value(r).expect("serializable");
+    v["projection"] = json!(dims);
+    (text, v)
+}
+
 type Parts = (bool, Vec<Value>, String);
 
 /// The set restricted to `dims`: the set itself when `dims` is all of it, in order.
@@ -219,17 +271,8 @@ fn nets(
                     .map_err(err)?;
                 progress.finish();
                 holds &= r.holds;
-                text += &format!(
-                    "dims {dims:?}: ({t},{m},{})-net in base {b}: {} ({} shapes checked)\n",
-                    set.dims(),
-                    if r.holds { "holds" } else { "FAILS" },
-                    r.shapes_checked
-                );
-                if let Some(f) = &r.first_failure {
-                    text += &format!("  first failure: {}\n", describe_failure(f, b));
-                }
-                let mut v = serde_json::to_value(&r).expect("serializable");
-                v["projection"] = json!(dims);
+                let (line, mut v) = net_verdict(dims, &r, b);
+                text += &line;
                 if q.histograms {
                     v["histograms"] =
                         serde_json::to_value(histograms(set, base, m, t).map_err(err)?)

@@ -106,6 +106,12 @@ impl PointSet {
         PointSet::from_flat(Width::W64, dims, &words)
     }
 
+    /// The word width and the per-dimension columns, giving up the set (so a caller can free
+    /// each column as soon as it has read it).
+    pub fn into_columns(self) -> (Width, Vec<Vec<u64>>) {
+        (self.width, self.coords)
+    }
+
     /// From per-dimension columns (all of equal length).
     pub fn from_columns(width: Width, coords: Vec<Vec<u64>>) -> Result<Self, NetError> {
         let n = coords

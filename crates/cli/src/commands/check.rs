@@ -4,7 +4,9 @@ use crate::input::{read_points_typed, FloatWords, InputFormat};
 use crate::CliError;
 use clap::Args;
 use gartowen::certificate::{CertVerdict, Certificate};
-use gartowen::net_check::{check_points, snap_floats, snap_note, NetOutcome, NetQuery, Progress};
+use gartowen::net_check::{
+    check_points_owned, snap_floats, snap_note, NetOutcome, NetQuery, Progress,
+};
 use gartowen::netcheck::CheckBase;
 use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::{json, Value};
@@ -130,17 +132,22 @@ pub fn run(a: CheckArgs) -> Result<ExitCode, CliError> {
         projections: a.projections.clone(),
         histograms: a.histograms,
     };
-    let (points, snapped) = if floats && !a.no_snap {
-        snap_floats(&read, base, &query)
-            .map_err(|e| CliError::Usage(format!("{}: {e}", a.file.display())))?
+    let coordinates = read.len() * read.dims();
+    // Only floats in a base that is not a power of two are snapped (a new set; the read one
+    // is dropped here). Otherwise the read set itself is handed on, not copied.
+    let (points, snapped) = if floats && !a.no_snap && base.log2().is_none() {
+        let (set, summary) = snap_floats(&read, base, &query)
+            .map_err(|e| CliError::Usage(format!("{}: {e}", a.file.display())))?;
+        (set.into_owned(), summary)
     } else {
-        (std::borrow::Cow::Borrowed(&read), None)
+        (read, None)
     };
     let NetOutcome {
         holds,
         result,
         text,
-    } = check_points(&points, base, &query, &BarProgress::default()).map_err(CliError::Usage)?;
+    } = check_points_owned(points, base, &query, &BarProgress::default())
+        .map_err(CliError::Usage)?;
     let snap_json = snapped.as_ref().map(|s| {
         json!({ "base": s.base, "depth": s.digits, "snapped": s.snapped,
                 "radius_log2": s.radius_log2 })
@@ -172,7 +179,7 @@ pub fn run(a: CheckArgs) -> Result<ExitCode, CliError> {
         crate::outln!("{}", cert.to_json());
     } else {
         if let Some(s) = &snapped {
-            crate::out!("{}", snap_note(s, read.len() * read.dims()));
+            crate::out!("{}", snap_note(s, coordinates));
         }
         crate::out!("{text}");
     }
