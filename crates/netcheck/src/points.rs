@@ -70,38 +70,32 @@ impl PointSet {
     /// From flat row-major f64 values, converted exactly to 64-bit words. Errors name the first
     /// NaN, value outside [0,1), or value that is not a multiple of 2^-64.
     pub fn from_f64(dims: usize, values: &[f64]) -> Result<Self, NetError> {
-        if dims == 0 {
-            return Err(NetError::BadShape("points have zero dimensions".into()));
-        }
-        let mut words = Vec::with_capacity(values.len());
-        for (k, &v) in values.iter().enumerate() {
-            let w = word_from_f64(v, Width::W64).map_err(|e: CoreError| NetError::BadValue {
-                point: k / dims,
-                dim: k % dims,
-                reason: e.to_string(),
-            })?;
-            words.push(w);
-        }
-        PointSet::from_flat(Width::W64, dims, &words)
+        Self::from_f64_by(dims, values, |v| word_from_f64(v, Width::W64))
     }
 
     /// From flat row-major f64 values, each read as the 64-bit word at or below it
     /// ([`gartowen_core::word_from_f64_floor`]: values below 2^-11 lose bits below 2^-64, which
     /// no box of depth ≤ 64 bits tells apart). Errors name the first NaN or value outside [0,1).
     pub fn from_f64_floor(dims: usize, values: &[f64]) -> Result<Self, NetError> {
+        Self::from_f64_by(dims, values, gartowen_core::word_from_f64_floor)
+    }
+
+    /// From flat row-major f64 values, each made a 64-bit word by `word`.
+    fn from_f64_by(
+        dims: usize,
+        values: &[f64],
+        word: impl Fn(f64) -> Result<u64, CoreError>,
+    ) -> Result<Self, NetError> {
         if dims == 0 {
             return Err(NetError::BadShape("points have zero dimensions".into()));
         }
         let mut words = Vec::with_capacity(values.len());
         for (k, &v) in values.iter().enumerate() {
-            let w = gartowen_core::word_from_f64_floor(v).map_err(|e: CoreError| {
-                NetError::BadValue {
-                    point: k / dims,
-                    dim: k % dims,
-                    reason: e.to_string(),
-                }
-            })?;
-            words.push(w);
+            words.push(word(v).map_err(|e| NetError::BadValue {
+                point: k / dims,
+                dim: k % dims,
+                reason: e.to_string(),
+            })?);
         }
         PointSet::from_flat(Width::W64, dims, &words)
     }

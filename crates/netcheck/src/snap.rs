@@ -228,6 +228,8 @@ mod tests {
         let p = PointSet::from_columns(Width::W64, vec![vec![0, w]]).unwrap();
         let e = snap_to_grid(&p, 3, 12, 52).unwrap().unwrap_err();
         assert_eq!((e.point, e.dim), (1, 0));
+        assert_eq!(e.value, x);
+        assert_eq!(e.grid, (3u128.pow(12) / 3, 3u128.pow(12)));
         assert!(e.to_string().contains("point 1 coordinate 0"), "{e}");
         assert!(e.reason.contains("radii"), "{e}");
         let near_one = set(&[1.0 - 2f64.powi(-53)]);
