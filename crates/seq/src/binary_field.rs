@@ -154,6 +154,9 @@ mod tests {
                 p = f.mul(p, x);
             }
             assert_eq!(p, 1);
+            assert_eq!(f.polynomial(), PRIMITIVE_POLYNOMIALS[q as usize - 1]);
+            assert_eq!(f.polynomial() >> q, 1, "degree q");
+            assert_eq!(DigitField::q(&f), q);
             // The multiplication matrix applies the product.
             for a in 0..b {
                 let m = f.mult_matrix(a);

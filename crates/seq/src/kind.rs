@@ -147,6 +147,11 @@ mod tests {
     #[test]
     fn names_parse_back_and_bad_parameters_are_named() {
         let mut kinds = SequenceKind::ALL.to_vec();
+        let bases: Vec<u32> = SequenceKind::faure_all()
+            .iter()
+            .map(|k| k.base().base())
+            .collect();
+        assert_eq!(bases, vec![2, 4, 8, 16, 32, 64, 128, 256]);
         kinds.extend(SequenceKind::faure_all());
         kinds.push(SequenceKind::FaureNet(PowerOfTwoBase::B8, 3));
         for k in kinds {
@@ -156,6 +161,9 @@ mod tests {
             "faure:base=256".parse::<SequenceKind>().unwrap().max_dims(),
             256
         );
+        let net: SequenceKind = "faure-net:base=8:m=21".parse().unwrap();
+        assert_eq!(net.max_dims(), 9);
+        assert!("faure-net:base=8:m=22".parse::<SequenceKind>().is_err());
         for (bad, fragment) in [
             ("faure", "'base=' is required"),
             ("faure:base=6", "base 6"),

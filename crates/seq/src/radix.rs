@@ -158,6 +158,9 @@ mod tests {
         assert_eq!(radical_inverse(6, 2, 3).to_f64(), 0.375); // 110₂ → 0.011₂
         let h = halton(4, 2).unwrap();
         assert_eq!(h[2].to_f64(), 0.5);
+        // Four points need exactly two base-2 digits: point 1 is 1/2 as 2/4.
+        assert_eq!((h[2].numer, h[2].denom), (2, 4));
+        assert_eq!(halton(10, 32).unwrap().len(), 320);
         // Four points need two base-3 digits: point 1 is 0.10₃ = 3/9, point 3 = 10₃ is 0.01₃.
         assert_eq!((h[3].numer, h[3].denom), (3, 9));
         assert_eq!((h[7].numer, h[7].denom), (1, 9));
@@ -172,6 +175,31 @@ mod tests {
             for i in 0..n {
                 let f = radical_inverse(i, p, m);
                 assert!(!std::mem::replace(&mut seen[f.numer as usize], true));
+            }
+        }
+    }
+
+    /// Every elementary box of volume p^-m holds one of the first p^m points, counted on the
+    /// exact numerators (every dimension, so every Pascal power j is exercised).
+    #[test]
+    fn prime_faure_points_are_0_m_s_nets_on_their_exact_digits() {
+        for (p, m) in [(3u64, 3u32), (5, 2), (7, 2)] {
+            let n = p.pow(m);
+            let dims = p as usize;
+            let f = faure_prime(p, n, dims).unwrap();
+            let digits = f[0].denom.ilog(p);
+            // Every pair of dimensions (a, b) and split k + (m − k).
+            for a in 0..dims {
+                for b in a + 1..dims {
+                    for k in 0..=m {
+                        let mut seen = std::collections::HashSet::new();
+                        for i in 0..n as usize {
+                            let x = f[i * dims + a].numer / p.pow(digits - k);
+                            let y = f[i * dims + b].numer / p.pow(digits - (m - k));
+                            assert!(seen.insert((x, y)), "p {p} dims ({a},{b}) k {k}");
+                        }
+                    }
+                }
             }
         }
     }
