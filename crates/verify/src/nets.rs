@@ -102,3 +102,50 @@ pub fn check_nets(s: &dyn Scrambler, width: Width, level: Level) -> (Verdict, St
     }
     (Verdict::Pass, format!("t-values kept: {}", kept.join("; ")))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn bases(q: u32) -> Vec<u32> {
+        nested_bases(PowerOfTwoBase::from_q(q).unwrap())
+            .iter()
+            .map(|b| b.base())
+            .collect()
+    }
+
+    #[test]
+    fn a_base_is_nested_in_its_powers_up_to_256() {
+        assert_eq!(bases(1), vec![2, 4, 8, 16, 32, 64, 128, 256]);
+        assert_eq!(bases(2), vec![4, 16, 64, 256]);
+        assert_eq!(bases(3), vec![8, 64]);
+        assert_eq!(bases(4), vec![16, 256]);
+        for q in 5..=8 {
+            assert_eq!(bases(q), vec![1 << q]);
+        }
+    }
+
+    #[test]
+    fn every_base_checks_a_multi_dimensional_zero_net() {
+        for q in 1..=8 {
+            let base = PowerOfTwoBase::from_q(q).unwrap();
+            let (kind, dims) = net_sequence(base);
+            assert_eq!(kind.base(), base);
+            assert!(dims.len() >= 3, "base {}", base.base());
+            let seq = kind
+                .build(dims.iter().max().unwrap() + 1, Width::W32)
+                .unwrap();
+            // Sobol's dims 0..3 are a (1,3)-sequence; every other sequence here is (0,s).
+            let t = if q == 1 { 1 } else { 0 };
+            for m in 1..=max_m(base, Level::Quick) {
+                assert!(
+                    rank::t_value(&seq, &dims, q, m).unwrap() <= t,
+                    "q {q} m {m}"
+                );
+            }
+            assert!(base.base().pow(max_m(base, Level::Quick)) >= 256);
+        }
+        assert_eq!(max_m(PowerOfTwoBase::B2, Level::Full), 16);
+        assert_eq!(max_m(PowerOfTwoBase::B256, Level::Exhaustive), 2);
+    }
+}
