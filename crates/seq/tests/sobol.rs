@@ -167,3 +167,15 @@ fn incremental_fills_equal_random_access_in_both_orders() {
         }
     }
 }
+
+/// The Faure sequence in base 2 is Sobol's first two dimensions, column for column (the
+/// README says so): the identity and the Pascal matrix mod 2.
+#[test]
+fn faure_in_base_2_is_the_first_two_sobol_dimensions() {
+    let sobol = gartowen_seq::sobol::sequence(2, Width::W32).unwrap();
+    let faure =
+        gartowen_seq::faure::faure(gartowen_core::PowerOfTwoBase::B2, 2, Width::W32).unwrap();
+    for j in 0..2 {
+        assert_eq!(faure.columns(j), sobol.columns(j), "dim {j}");
+    }
+}
