@@ -62,7 +62,7 @@ pub enum PointCount {
 /// What to generate.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct GenerateRequest {
-    /// Sequence name: `sobol`, `sz4`, `sz16`.
+    /// Sequence name: `sobol`, `sz4`, `sz16`, `faure:base=B` or `faure-net:base=B:m=M`.
     pub seq: String,
     /// Number of dimensions.
     pub dims: usize,

@@ -114,7 +114,8 @@ def generate(
 
     Args:
         seq: ``"sobol"`` (base 2, Joe-Kuo new-joe-kuo-6.21201, 21201 dims), ``"sz4"`` (base 4,
-            4 dims) or ``"sz16"`` (base 16, 16 dims).
+            4 dims), ``"sz16"`` (base 16, 16 dims), ``"faure:base=B"`` (B = 2, 4, ..., 256;
+            B dims) or ``"faure-net:base=B:m=M"`` (B + 1 dims, a net of its first B^M points).
         dims: number of dimensions.
         n: number of points (at least 1).
         scramble: registry scrambler ``NAME[:OPTION...]`` (see :func:`list_scramblers`);

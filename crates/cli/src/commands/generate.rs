@@ -41,7 +41,9 @@ pub enum OrderArg {
 #[derive(Args, Debug)]
 #[command(verbatim_doc_comment)]
 pub struct GenerateArgs {
-    /// Sequence: sobol (base 2, Joe–Kuo 6.21201, 21201 dims), sz4 (base 4, 4 dims), sz16 (base 16, 16 dims).
+    /// Sequence: sobol (base 2, Joe–Kuo 6.21201, 21201 dims), sz4 (base 4, 4 dims), sz16 (base 16,
+    /// 16 dims), faure:base=B (B = 2, 4, …, 256; B dims, a (0,B)-sequence over GF(B)) or
+    /// faure-net:base=B:m=M (the (0,M,B+1)-net of its first B^M points).
     #[arg(long)]
     pub seq: String,
     /// Number of dimensions.

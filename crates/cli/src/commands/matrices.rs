@@ -23,7 +23,7 @@ pub enum MatrixFormat {
 /// Example: gartowen matrices --seq sz4 --dims 4 --format hex
 #[derive(Args, Debug)]
 pub struct MatricesArgs {
-    /// Sequence: sobol, sz4 or sz16.
+    /// Sequence: sobol, sz4, sz16, faure:base=B or faure-net:base=B:m=M.
     #[arg(long)]
     pub seq: String,
     /// Number of dimensions.
