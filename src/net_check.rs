@@ -91,15 +91,16 @@ pub const F64_RADIUS_LOG2: u32 = 46;
 /// Float input in a base that is not a power of two, snapped to the base's grid at the
 /// check's depth (`q.m`, else the largest m with b^m ≤ N) by the rule of
 /// [`gartowen_netcheck::snap`]. Powers of two need no snapping (a binary float is exact in
-/// them): the set comes back unchanged with `None`. An error names the ambiguous point, or
-/// says that the precision does not reach the depth.
-pub fn snap_floats<'a>(
-    points: &'a PointSet,
+/// them): the set comes back unchanged with `None`. Otherwise the given set is dropped once the
+/// snapped one exists. An error names the ambiguous point, or says that the precision does not
+/// reach the depth.
+pub fn snap_floats(
+    points: PointSet,
     base: CheckBase,
     q: &NetQuery,
-) -> Result<(Cow<'a, PointSet>, Option<SnapSummary>), String> {
+) -> Result<(PointSet, Option<SnapSummary>), String> {
     if base.log2().is_some() {
-        return Ok((Cow::Borrowed(points), None));
+        return Ok((points, None));
     }
     let b = base.get();
     let depth = q.m.unwrap_or_else(|| {
@@ -110,8 +111,8 @@ pub fn snap_floats<'a>(
         }
         m
     });
-    match snap_to_grid(points, b, depth.max(1), F64_RADIUS_LOG2).map_err(|e| e.to_string())? {
-        Ok((set, summary)) => Ok((Cow::Owned(set), Some(summary))),
+    match snap_to_grid(&points, b, depth.max(1), F64_RADIUS_LOG2).map_err(|e| e.to_string())? {
+        Ok((set, summary)) => Ok((set, Some(summary))),
         Err(ambiguous) => Err(format!(
             "{ambiguous}; refused rather than read in a box it may not belong to"
         )),

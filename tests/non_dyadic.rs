@@ -27,9 +27,9 @@ fn t_of(values: &[f64], dims: usize, b: u64, m: u32, snap: bool) -> u32 {
         ..NetQuery::default()
     };
     let (set, _) = if snap {
-        snap_floats(&set, base, &q).unwrap()
+        snap_floats(set, base, &q).unwrap()
     } else {
-        (std::borrow::Cow::Borrowed(&set), None)
+        (set, None)
     };
     let out = check_points(&set, base, &q, &Silent).unwrap();
     out.result["t"].as_u64().unwrap() as u32
@@ -72,7 +72,7 @@ fn prime_base_faure_nets_agree_with_the_brute_force_oracle() {
                 m: Some(m),
                 ..NetQuery::default()
             };
-            let (snapped, summary) = snap_floats(&set, CheckBase::new(p).unwrap(), &q).unwrap();
+            let (snapped, summary) = snap_floats(set, CheckBase::new(p).unwrap(), &q).unwrap();
             assert!(summary.unwrap().snapped > 0);
             let rows: Vec<Vec<u64>> = (0..snapped.len()).map(|i| snapped.point(i)).collect();
             let few: Vec<Vec<u64>> = rows.iter().map(|r| r[..3.min(dims)].to_vec()).collect();
@@ -105,11 +105,11 @@ fn input_rounded_more_coarsely_than_a_float_is_refused_naming_the_point() {
         m: Some(4),
         ..NetQuery::default()
     };
-    let e = snap_floats(&set, CheckBase::new(3).unwrap(), &q).unwrap_err();
+    let e = snap_floats(set.clone(), CheckBase::new(3).unwrap(), &q).unwrap_err();
     assert!(e.contains("point ") && e.contains("coordinate 0"), "{e}");
     assert!(e.contains("radii"), "{e}");
     // Powers of two are never snapped: binary floats are exact there.
-    let (same, none) = snap_floats(&set, CheckBase::new(4).unwrap(), &q).unwrap();
+    let (same, none) = snap_floats(set.clone(), CheckBase::new(4).unwrap(), &q).unwrap();
     assert!(none.is_none() && same.column(0) == set.column(0));
     let _ = Width::W64;
 }

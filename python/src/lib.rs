@@ -169,6 +169,8 @@ fn check(
     let input = arrays::read_points_as(points, "points", true)?;
     let floats = matches!(input.element, arrays::Element::F64);
     let read = input.point_set()?;
+    let record = gartowen::reports::point_set_record("array", "points", &read);
+    let coordinates = read.len() * read.dims();
     let query = NetQuery {
         m,
         t,
@@ -177,21 +179,16 @@ fn check(
         histograms,
     };
     let (set, snapped) = if floats && snap {
-        gartowen::net_check::snap_floats(&read, check_base, &query)
-            .map_err(PyValueError::new_err)?
+        gartowen::net_check::snap_floats(read, check_base, &query).map_err(PyValueError::new_err)?
     } else {
-        (std::borrow::Cow::Borrowed(&read), None)
+        (read, None)
     };
     let mut outcome = py
         .detach(|| check_points(&set, check_base, &query, &Silent))
         .map_err(PyValueError::new_err)?;
     if let Some(s) = &snapped {
-        outcome.text = gartowen::net_check::snap_note(s, read.len() * read.dims()) + &outcome.text;
+        outcome.text = gartowen::net_check::snap_note(s, coordinates) + &outcome.text;
     }
-    let snap_json = snapped.as_ref().map(|s| {
-        json!({ "base": s.base, "depth": s.digits, "snapped": s.snapped,
-                "radius_log2": s.radius_log2 })
-    });
     let cert = Certificate::new(
         "check",
         if outcome.holds {
@@ -202,12 +199,10 @@ fn check(
         json!({
             "base": base, "m": m, "t": t, "sequence": sequence,
             "projections": projections, "histograms": histograms,
-            "snap": snap_json, "no_snap": !snap,
+            "snap": snapped, "no_snap": !snap,
         }),
         vec![],
-        vec![gartowen::reports::point_set_record(
-            "array", "points", &read,
-        )],
+        vec![record],
         outcome.result,
     );
     Ok((cert.to_json(), outcome.holds, outcome.text))

@@ -27,12 +27,13 @@
 use crate::{NetError, PointSet};
 use gartowen_core::Width;
 
-/// What snapping did.
-#[derive(Debug, Clone, PartialEq, Eq)]
+/// What snapping did (serialized as the certificate's `parameters.snap`).
+#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize)]
 pub struct SnapSummary {
     /// The base.
     pub base: u64,
     /// The depth m of the grid: intervals of depth ≤ m are read exactly.
+    #[serde(rename = "depth")]
     pub digits: u32,
     /// Coordinates moved onto a grid point (those already exactly on one are not counted).
     pub snapped: usize,

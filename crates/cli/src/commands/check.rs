@@ -133,12 +133,11 @@ pub fn run(a: CheckArgs) -> Result<ExitCode, CliError> {
         histograms: a.histograms,
     };
     let coordinates = read.len() * read.dims();
-    // Only floats in a base that is not a power of two are snapped (a new set; the read one
-    // is dropped here). Otherwise the read set itself is handed on, not copied.
-    let (points, snapped) = if floats && !a.no_snap && base.log2().is_none() {
-        let (set, summary) = snap_floats(&read, base, &query)
-            .map_err(|e| CliError::Usage(format!("{}: {e}", a.file.display())))?;
-        (set.into_owned(), summary)
+    // Floats in a base that is not a power of two become a snapped set (the read one is
+    // dropped); otherwise the read set itself is handed on, not copied.
+    let (points, snapped) = if floats && !a.no_snap {
+        snap_floats(read, base, &query)
+            .map_err(|e| CliError::Usage(format!("{}: {e}", a.file.display())))?
     } else {
         (read, None)
     };
@@ -148,10 +147,6 @@ pub fn run(a: CheckArgs) -> Result<ExitCode, CliError> {
         text,
     } = check_points_owned(points, base, &query, &BarProgress::default())
         .map_err(CliError::Usage)?;
-    let snap_json = snapped.as_ref().map(|s| {
-        json!({ "base": s.base, "depth": s.digits, "snapped": s.snapped,
-                "radius_log2": s.radius_log2 })
-    });
     if let Some(path) = &a.junit {
         crate::output::write_junit(
             path,
@@ -170,7 +165,7 @@ pub fn run(a: CheckArgs) -> Result<ExitCode, CliError> {
             json!({
                 "base": base.get(), "m": a.m, "t": a.t, "sequence": a.sequence,
                 "projections": a.projections, "histograms": a.histograms,
-                "snap": snap_json, "no_snap": a.no_snap,
+                "snap": snapped, "no_snap": a.no_snap,
             }),
             vec![],
             vec![input],
