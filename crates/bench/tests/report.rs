@@ -136,3 +136,18 @@ fn figures_are_png_files() {
     .is_err());
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Each rule says "more than": a run exactly at a threshold is not a regression.
+#[test]
+fn a_value_exactly_at_a_threshold_is_not_a_regression() {
+    let base = report(-1.5, 1e-5, 2.0);
+    let t = &base.thresholds;
+    let at_slope = report(-1.5 + t.slope, 1e-5, 2.0);
+    let at_rmse = report(-1.5, 1e-5 * t.rmse_factor, 2.0);
+    let row = &base.speed[0];
+    let allowed = gartowen_bench::speed::allowed_growth(row, row, t.speed_factor, t.speed_z);
+    let at_speed = report(-1.5, 1e-5, 2.0 * allowed);
+    for (what, r) in [("slope", at_slope), ("rmse", at_rmse), ("speed", at_speed)] {
+        assert!(compare(&base, &r).is_empty(), "{what}");
+    }
+}
