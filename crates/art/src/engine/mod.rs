@@ -81,6 +81,9 @@ pub enum ArtMutant {
     StuckCodeBit,
     /// The design before dimension shifts: hashed roots only, so dimensions can coincide.
     RootOnlyDimensions,
+    /// The partial tail digit gets no translation (scalar paths only): the flipped tail rule
+    /// the extracted differential test must catch.
+    TailUntranslated,
 }
 
 /// A 32-bit bijection (murmur3's finalizer): distinct inputs give distinct outputs.
@@ -245,6 +248,25 @@ impl ArtOwen {
         self.variant
     }
 
+    /// The translation code of every symbol: a top-aligned 64-bit word whose q-bit field j
+    /// (bits 64 − q(j+1) .. 64 − qj) lands on the digit j levels below the symbol's node.
+    pub fn codes(&self) -> &[u64] {
+        &self.codes
+    }
+
+    /// The ψ table: the image of digit d under symbol s's ψ at index s·2^q + d; empty when ψ
+    /// is the identity for every symbol (translation-only variants).
+    pub fn psi_images(&self) -> &[u8] {
+        &self.psi
+    }
+
+    /// The input shift A and output shift D of dimension `dim` for `width`-bit words (the low
+    /// `width` bits): `scramble(x) = ART_root(x ⊕ A) ⊕ D`.
+    pub fn dimension_shifts(&self, dim: u32, width: Width) -> (u64, u64) {
+        let (_, a, d) = self.keys_at(dim, width);
+        (a, d)
+    }
+
     /// The grammar.
     pub fn grammar(&self) -> &Grammar {
         &self.grammar
@@ -348,7 +370,12 @@ impl ArtOwen {
         let r = w - consumed;
         if r != 0 {
             g ^= self.codes[s as usize];
-            out = (out << r) | ((x & ((1 << r) - 1)) ^ (g >> (64 - r)));
+            let t = if self.mutant == ArtMutant::TailUntranslated {
+                0
+            } else {
+                g >> (64 - r)
+            };
+            out = (out << r) | ((x & ((1 << r) - 1)) ^ t);
         }
         out
     }
@@ -418,9 +445,13 @@ impl ArtOwen {
         let digits = layout.num_digits();
         for k in 0..digits {
             f ^= self.codes[s as usize] >> (q * k);
-            let fk = layout.get(f >> top, k);
             let d_in = layout.get(x, k);
             let full = layout.digit_bits(k) == q;
+            let fk = if !full && self.mutant == ArtMutant::TailUntranslated {
+                0
+            } else {
+                layout.get(f >> top, k)
+            };
             let (original, mapped) = if inverse {
                 let t = d_in ^ fk;
                 let o = if full { self.psi_invert(s, t) } else { t };
@@ -514,6 +545,13 @@ impl Scrambler for ArtOwen {
 
     /// Interleaved chains through the step table (bit-identical to [`Scrambler::scramble`]).
     fn scramble_batch(&self, words: &mut [u64], width: Width, dim: u32) {
+        if self.mutant == ArtMutant::TailUntranslated {
+            // The mutant exists on the scalar paths only.
+            words
+                .iter_mut()
+                .for_each(|w| *w = self.run(*w, width, dim, false));
+            return;
+        }
         self.forward_batch(words, width, dim)
     }
 }

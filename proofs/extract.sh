@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Builds the differential driver from the Coq extraction: compiles the theories the extraction
+# needs, runs Extract.v in OUT (it writes gartowen_extracted.ml there) and compiles
+# extracted/driver.ml against it with ocamlopt into OUT/driver.
+# Usage: proofs/extract.sh OUT    (tests/extracted_differential.rs calls it with target/extracted)
+set -euo pipefail
+proofs="$(cd "$(dirname "$0")" && pwd)"
+out="${1:?usage: proofs/extract.sh OUT}"
+mkdir -p "$out"
+for tool in coqc ocamlopt; do
+  command -v "$tool" >/dev/null || { echo "extract: $tool is missing (Debian's coq brings both)" >&2; exit 1; }
+done
+for t in Nested Art ArtWord; do
+  coqc -Q "$proofs" Gartowen "$proofs/$t.v"
+done
+cd "$out"
+coqc -Q "$proofs" Gartowen "$proofs/Extract.v"
+cp "$proofs/extracted/driver.ml" .
+ocamlopt -w -a gartowen_extracted.mli gartowen_extracted.ml driver.ml -o driver
