@@ -1,5 +1,6 @@
-(** * T1: every permutation of GF(2)^q factors uniquely as ψ ⊕ B with ψ(0) = 0, B = π(0);
-    and AGL(2,2) = S_4, by computation. *)
+(** * Every permutation of GF(2)^q factors uniquely as ψ ⊕ B with ψ(0) = 0, B = π(0), and π is
+    a bijection exactly when ψ is. (The laws built on this, and AGL(q,2) against S_{2^q}, are in
+    [NodeLaws.v].) *)
 
 From Coq Require Import List Arith Bool Lia.
 Import ListNotations.
@@ -63,56 +64,3 @@ Proof.
     (fun x y z => eq_sym (Nat.lxor_assoc x y z)) Nat.lxor_0_r Nat.lxor_nilpotent pi) as [A B].
   split; [exact A | exact B].
 Qed.
-
-(** Counting corollary: π ↦ (ψ, π(0)) is a bijection from S_b onto (permutations fixing 0) × b
-    choices, so b! = b·(b − 1)!, here for b = 2^q. *)
-Theorem count_factorization : forall q, fact (2 ^ q) = 2 ^ q * fact (2 ^ q - 1).
-Proof.
-  intro q. assert (H : 2 ^ q <> 0) by (apply Nat.pow_nonzero; lia).
-  destruct (2 ^ q) as [|n] eqn:E; [lia|]. simpl. rewrite Nat.sub_0_r. reflexivity.
-Qed.
-
-(** AGL(2,2) = S_4. A digit d in 0..3 has bits (d mod 2, d / 2). *)
-Definition bit0 d := Nat.odd d.
-Definition bit1 d := Nat.odd (d / 2).
-Definition of_bits (b0 b1 : bool) : nat := (if b0 then 1 else 0) + (if b1 then 2 else 0).
-
-(** y = A·x ⊕ u with A = [[a, b], [c, e]] acting on (bit0, bit1). *)
-Definition affine (a b c e : bool) (u d : nat) : nat :=
-  Nat.lxor (of_bits (xorb (a && bit0 d) (b && bit1 d)) (xorb (c && bit0 d) (e && bit1 d))) u.
-
-Definition bools := [false; true].
-Definition invertible (a b c e : bool) := xorb (a && e) (b && c).
-
-Definition agl22 : list (list nat) :=
-  flat_map (fun a => flat_map (fun b => flat_map (fun c => flat_map (fun e =>
-    if invertible a b c e then map (fun u => map (affine a b c e u) [0; 1; 2; 3]) [0; 1; 2; 3] else [])
-  bools) bools) bools) bools.
-
-Fixpoint insert_all (x : nat) (l : list nat) : list (list nat) :=
-  match l with
-  | [] => [[x]]
-  | y :: r => (x :: y :: r) :: map (cons y) (insert_all x r)
-  end.
-
-Fixpoint perms (l : list nat) : list (list nat) :=
-  match l with
-  | [] => [[]]
-  | x :: r => flat_map (insert_all x) (perms r)
-  end.
-
-Definition list_eqb (x y : list nat) : bool := if list_eq_dec Nat.eq_dec x y then true else false.
-
-Fixpoint nodupb (l : list (list nat)) : bool :=
-  match l with
-  | [] => true
-  | x :: r => negb (existsb (list_eqb x) r) && nodupb r
-  end.
-
-(** The 6 invertible matrices times 4 translations give 24 distinct maps, which are exactly the
-    24 permutations of {0, 1, 2, 3}. *)
-Theorem agl22_is_s4 :
-  length agl22 = 24 /\ nodupb agl22 = true /\ length (perms [0; 1; 2; 3]) = 24 /\
-  forallb (fun p => existsb (list_eqb p) agl22) (perms [0; 1; 2; 3]) = true /\
-  forallb (fun p => existsb (list_eqb p) (perms [0; 1; 2; 3])) agl22 = true.
-Proof. vm_compute. repeat split. Qed.

@@ -5,7 +5,7 @@
 # skip (then it says so loudly). Run from anywhere.
 set -euo pipefail
 cd "$(dirname "$0")"
-theories=(Nested Factor Counterexample Art ArtWord Binary)
+theories=(Nested Factor Counterexample Art ArtWord Binary Laws NodeLaws)
 
 if ! command -v coqc >/dev/null 2>&1; then
   if [ "${GARTOWEN_SKIP_PROOFS:-0}" = 1 ]; then
