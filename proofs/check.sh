@@ -5,7 +5,10 @@
 # skip (then it says so loudly). Run from anywhere.
 set -euo pipefail
 cd "$(dirname "$0")"
-theories=(Nested Factor Counterexample Art ArtWord Binary Laws NodeLaws)
+theories=(Nested Factor Counterexample Art ArtWord Binary Laws NodeLaws Float)
+# The only axioms a floating-point theorem may rest on: Coq's classical reals, which Flocq uses.
+allowed_axioms=(ClassicalDedekindReals.sig_forall_dec ClassicalDedekindReals.sig_not_dec
+  FunctionalExtensionality.functional_extensionality_dep Classical_Prop.classic)
 
 if ! command -v coqc >/dev/null 2>&1; then
   if [ "${GARTOWEN_SKIP_PROOFS:-0}" = 1 ]; then
@@ -22,6 +25,11 @@ if grep -nE '\b(Admitted|admit|Axiom|Parameter|Conjecture)\b' ./*.v; then
 fi
 
 echo "proofs: $(coqc --version | head -1)"
+if ! printf 'From Flocq Require Import Core.\n' > /tmp/gartowen_flocq_probe.v ||
+   ! coqc /tmp/gartowen_flocq_probe.v >/dev/null 2>&1; then
+  echo "proofs: Flocq is missing (install Debian's libcoq-flocq)" >&2
+  exit 1
+fi
 for t in "${theories[@]}"; do
   coqc -Q . Gartowen "$t.v"
   echo "proofs: $t.v compiled"
@@ -40,3 +48,24 @@ if [ "$closed" != "$expected" ]; then
   exit 1
 fi
 echo "proofs: all $expected main theorems closed under the global context"
+
+# Floating point: every theorem's axioms are among the allowed ones, each listed by name.
+out=$(coqc -Q . Gartowen AssumptionsFloat.v)
+expected=$(grep -c '^Print Assumptions' AssumptionsFloat.v)
+blocks=$(printf '%s\n' "$out" | grep -c '^Axioms:' || true)
+if [ "$blocks" != "$expected" ]; then
+  printf '%s\n' "$out" | sed 's/^/proofs: /'
+  echo "proofs: expected $expected axiom lists from AssumptionsFloat.v, found $blocks" >&2
+  exit 1
+fi
+used=$(printf '%s\n' "$out" | grep -E '^[A-Za-z_][A-Za-z0-9_.]* *$|^[A-Za-z_][A-Za-z0-9_.]* :' | grep -v '^Axioms:' | awk '{print $1}' | sort -u)
+for a in $used; do
+  ok=0
+  for b in "${allowed_axioms[@]}"; do [ "$a" = "$b" ] && ok=1; done
+  if [ "$ok" != 1 ]; then
+    echo "proofs: a floating-point theorem rests on $a, which is not a standard axiom of the reals" >&2
+    exit 1
+  fi
+done
+grep '^Print Assumptions' AssumptionsFloat.v | awk '{print $3}' | tr -d . |
+  while read -r name; do echo "proofs: $name: only the standard axioms of the reals ($(echo $used | tr '\n' ' '))"; done
