@@ -103,7 +103,7 @@ fn art_section(out: &mut String, tables: &ArtOwen, outputs: &ArtOwen, words: &[(
         }
         out.push('\n');
         let group: Vec<&(Width, u32, u64)> = words.iter().filter(|w| w.0.bits() == bits).collect();
-        // The batch path on the same words must agree with the scalar path.
+        // The batch path on the same words: the driver checks both outputs.
         let mut batch: Vec<u64> = group.iter().map(|w| w.2).collect();
         for (i, &&(width, dim, x)) in group.iter().enumerate() {
             let y = outputs.scramble(x, width, dim);
@@ -111,14 +111,9 @@ fn art_section(out: &mut String, tables: &ArtOwen, outputs: &ArtOwen, words: &[(
                 let end = group[i..].iter().take_while(|w| w.1 == dim).count();
                 outputs.scramble_batch(&mut batch[i..i + end], width, dim);
             }
-            assert_eq!(
-                batch[i],
-                y,
-                "{}: batch ≠ scalar at x = {x:#x}",
-                outputs.name()
-            );
             let (a, d) = tables.dimension_shifts(dim, width);
-            writeln!(out, "word {} {a:x} {d:x} {x:x} {y:x}", tables.root(dim)).unwrap();
+            let root = tables.root(dim);
+            writeln!(out, "word {root} {a:x} {d:x} {x:x} {y:x} {:x}", batch[i]).unwrap();
         }
         out.push_str("end\n");
     }

@@ -8,7 +8,7 @@
        child  SYMBOLS*2^Q ints   child(s, d) at s*2^Q + d
        psi    SYMBOLS*2^Q ints   (when PSI = 1)
        codes  SYMBOLS hex        top-aligned 64-bit codes
-       word ROOT A D X Y         (hex A D X Y) Y = Rust scramble of X
+       word ROOT A D X Y Z       (hex A D X Y Z) Y, Z = Rust scalar and batch scrambles of X
        ...
        end
      act K  L_1 P_1 .. L_K P_K  X_1..X_K  Y_1..Y_K
@@ -86,11 +86,15 @@ let art_section () =
         let d = n_of_hex (token ()) in
         let xs = token () in
         let ys = token () in
+        let zs = token () in
         let y = art_word_dim q w child psi code64 root a d (n_of_hex xs) in
-        if not (N.eqb y (n_of_hex ys)) then
-          report_mismatch
-            (Printf.sprintf "art q=%d W=%d root=%d x=%s: rust %s, extracted %s" q w root xs
-               ys (hex_of_n y));
+        List.iter
+          (fun (path, v) ->
+            if not (N.eqb y (n_of_hex v)) then
+              report_mismatch
+                (Printf.sprintf "art q=%d W=%d root=%d x=%s: rust %s %s, extracted %s" q w root
+                   xs path v (hex_of_n y)))
+          [ ("scalar", ys); ("batch", zs) ];
         incr words;
         loop ()
     | t -> fail ("unexpected token in art section: " ^ t)
