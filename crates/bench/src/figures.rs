@@ -1,6 +1,7 @@
 //! PNG figures with plotters. Text uses DejaVu Sans embedded through the `dejavu` crate and
 //! rasterized by ab_glyph, so figures build on a machine without system font libraries.
 
+use plotters::coord::combinators::WithKeyPoints;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
@@ -66,8 +67,96 @@ fn color(i: usize) -> RGBColor {
     RGBColor(c.0, c.1, c.2)
 }
 
-type LogLogChart<'a> =
-    ChartContext<'a, BitMapBackend<'a>, Cartesian2d<LogCoord<f64>, LogCoord<f64>>>;
+type LogAxis = WithKeyPoints<LogCoord<f64>>;
+type LogLogChart<'a> = ChartContext<'a, BitMapBackend<'a>, Cartesian2d<LogAxis, LogAxis>>;
+
+/// The x and y ranges of a log-log chart fitted to `series` (data range widened by 1.5 on each
+/// side; x's upper end stretched by `x_stretch` to leave room for labels).
+pub fn chart_ranges(series: &[Series], x_stretch: f64) -> ((f64, f64), (f64, f64)) {
+    let all = || series.iter().flat_map(|s| s.points.iter());
+    let (x0, x1) = log_range(all().map(|p| p.0));
+    let (y0, y1) = log_range(all().map(|p| p.1));
+    ((x0, x1 * x_stretch), (y0, y1))
+}
+
+/// Tick positions of a log axis over [lo, hi]: every power of ten; with a `base`, every power
+/// of the base instead (point counts N = 16, 32, 64, … read off the axis), keeping only the
+/// decades farther than a factor 1.4 from every power (for base 2 every decade lies within √2
+/// of one, and the two labels would print over each other). With fewer than two decades and
+/// no base, 2·10^k and 5·10^k are added so the axis is never unlabelled.
+pub fn log_ticks(lo: f64, hi: f64, base: Option<f64>) -> Vec<f64> {
+    let mut ticks = Vec::new();
+    let powers = |b: f64, ticks: &mut Vec<f64>| {
+        let mut k = (lo.ln() / b.ln()).floor() as i32;
+        while b.powi(k) <= hi {
+            let v = b.powi(k);
+            if v >= lo {
+                ticks.push(v);
+            }
+            k += 1;
+        }
+    };
+    powers(10.0, &mut ticks);
+    if let Some(b) = base.filter(|b| *b > 1.0) {
+        let mut base_ticks = Vec::new();
+        powers(b, &mut base_ticks);
+        ticks.retain(|&d| base_ticks.iter().all(|&p| (d / p).max(p / d) > 1.4));
+        ticks.extend(base_ticks);
+    } else if ticks.len() < 2 {
+        for m in [2.0, 5.0] {
+            let mut k = (lo / m).log10().floor() as i32;
+            while m * 10f64.powi(k) <= hi {
+                let v = m * 10f64.powi(k);
+                if v >= lo {
+                    ticks.push(v);
+                }
+                k += 1;
+            }
+        }
+    }
+    ticks.sort_by(f64::total_cmp);
+    ticks.dedup_by(|a, b| (*a / *b - 1.0).abs() < 1e-12);
+    ticks
+}
+
+/// The base whose powers every x value is (2 for point counts 16, 32, …), if any.
+fn power_base(xs: impl Iterator<Item = f64>) -> Option<f64> {
+    let mut any = false;
+    for x in xs {
+        any = true;
+        if !(x > 0.0 && x.log2().fract() == 0.0) {
+            return None;
+        }
+    }
+    any.then_some(2.0)
+}
+
+/// The reference line of `slope` through (ax, 2·ay), for x from ax to `x_end`, clipped to the
+/// chart's box: both ends lie inside `x_range` × `y_range` and the segment's slope in log-log
+/// coordinates is exactly `slope` (plotters would clamp points outside the box to its edge,
+/// which bends the drawn slope). `None` when no part of the line is inside the box.
+pub fn reference_segment(
+    (ax, ay): (f64, f64),
+    slope: f64,
+    x_end: f64,
+    x_range: (f64, f64),
+    y_range: (f64, f64),
+) -> Option<[(f64, f64); 2]> {
+    // In log coordinates the line is Y = c + slope·X; clip X, then the X where Y leaves the box.
+    let c = (2.0 * ay).ln() - slope * ax.ln();
+    let (mut lo, mut hi) = (ax.max(x_range.0).ln(), x_end.min(x_range.1).ln());
+    let (y0, y1) = (y_range.0.ln(), y_range.1.ln());
+    if slope == 0.0 {
+        if !(y0..=y1).contains(&c) {
+            return None;
+        }
+    } else {
+        let (xa, xb) = ((y0 - c) / slope, (y1 - c) / slope);
+        lo = lo.max(xa.min(xb));
+        hi = hi.min(xa.max(xb));
+    }
+    (lo < hi).then(|| [lo, hi].map(|x| (x.exp(), (c + slope * x).exp())))
+}
 
 /// A 900×620 log-log chart fitted to `series` (x range stretched by `x_stretch` to leave room
 /// for labels), with a captioned, labelled mesh.
@@ -80,15 +169,21 @@ fn log_log_chart<'a>(
     x_stretch: f64,
 ) -> Result<LogLogChart<'a>, FigureError> {
     root.fill(&WHITE).map_err(fail)?;
-    let all = || series.iter().flat_map(|s| s.points.iter());
-    let (x0, x1) = log_range(all().map(|p| p.0));
-    let (y0, y1) = log_range(all().map(|p| p.1));
+    let ((x0, x1), (y0, y1)) = chart_ranges(series, x_stretch);
+    let base = power_base(series.iter().flat_map(|s| s.points.iter()).map(|p| p.0));
     let mut chart = ChartBuilder::on(root)
         .caption(title, (FONT, 22))
         .margin(12)
         .x_label_area_size(40)
         .y_label_area_size(70)
-        .build_cartesian_2d((x0..x1 * x_stretch).log_scale(), (y0..y1).log_scale())
+        .build_cartesian_2d(
+            (x0..x1)
+                .log_scale()
+                .with_key_points(log_ticks(x0, x1, base)),
+            (y0..y1)
+                .log_scale()
+                .with_key_points(log_ticks(y0, y1, None)),
+        )
         .map_err(fail)?;
     chart
         .configure_mesh()
@@ -115,12 +210,19 @@ pub fn loglog_lines(
     register_fonts();
     let root = BitMapBackend::new(path, (900, 620)).into_drawing_area();
     let mut chart = log_log_chart(&root, title, x_desc, y_desc, series, 1.0)?;
-    let x1 = log_range(series.iter().flat_map(|s| s.points.iter()).map(|p| p.0)).1;
+    let (x_range, y_range) = chart_ranges(series, 1.0);
+    let x_end = series
+        .iter()
+        .flat_map(|s| s.points.iter())
+        .map(|p| p.0)
+        .fold(f64::MIN, f64::max);
     if let Some(&(ax, ay)) = series.first().and_then(|s| s.points.first()) {
         for (k, &slope) in reference_slopes.iter().enumerate() {
             let grey = RGBColor(150, 150, 150);
             let style = ShapeStyle::from(&grey).stroke_width(1 + k as u32);
-            let line = [ax, x1].map(|x| (x, ay * 2.0 * (x / ax).powf(slope)));
+            let Some(line) = reference_segment((ax, ay), slope, x_end, x_range, y_range) else {
+                continue;
+            };
             chart
                 .draw_series(LineSeries::new(line, style))
                 .map_err(fail)?
