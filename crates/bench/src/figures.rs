@@ -207,6 +207,22 @@ pub fn loglog_lines(
     series: &[Series],
     reference_slopes: &[f64],
 ) -> Result<(), FigureError> {
+    loglog_lines_banded(path, title, x_desc, y_desc, series, &[], reference_slopes)
+}
+
+/// [`loglog_lines`] with a shaded band per series: `bands[i][k]` = (low, high) around point k
+/// of series i (for example the mean ± 2 standard errors). A low end at or below 0, which a
+/// log axis cannot show, is drawn at the bottom of the chart. Series past `bands.len()` get
+/// no band.
+pub fn loglog_lines_banded(
+    path: &Path,
+    title: &str,
+    x_desc: &str,
+    y_desc: &str,
+    series: &[Series],
+    bands: &[Vec<(f64, f64)>],
+    reference_slopes: &[f64],
+) -> Result<(), FigureError> {
     register_fonts();
     let root = BitMapBackend::new(path, (900, 620)).into_drawing_area();
     let mut chart = log_log_chart(&root, title, x_desc, y_desc, series, 1.0)?;
@@ -228,6 +244,33 @@ pub fn loglog_lines(
                 .map_err(fail)?
                 .label(format!("slope {slope}"))
                 .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
+        }
+    }
+    for (i, (s, band)) in series.iter().zip(bands).enumerate() {
+        // The band as one polygon: the high ends left to right, the low ends back.
+        let mut outline: Vec<(f64, f64)> = s
+            .points
+            .iter()
+            .zip(band)
+            .map(|(p, b)| (p.0, b.1.min(y_range.1)))
+            .collect();
+        outline.extend(
+            s.points
+                .iter()
+                .zip(band)
+                .rev()
+                .map(|(p, b)| (p.0, b.0.max(y_range.0))),
+        );
+        if outline
+            .iter()
+            .all(|p| p.0 > 0.0 && p.1 > 0.0 && p.1.is_finite())
+        {
+            chart
+                .draw_series(std::iter::once(Polygon::new(
+                    outline,
+                    color(i).mix(0.15).filled(),
+                )))
+                .map_err(fail)?;
         }
     }
     for (i, s) in series.iter().enumerate() {

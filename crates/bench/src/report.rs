@@ -5,7 +5,9 @@
 //! stored both as ns per coordinate and as a ratio to the `lk-hash` peer measured in the same
 //! run; baselines compare only the ratios.
 
-use crate::figures::{loglog_lines, loglog_points, panel_grid, FigureError, Panel, Series};
+use crate::figures::{
+    loglog_lines, loglog_lines_banded, loglog_points, panel_grid, FigureError, Panel, Series,
+};
 use crate::harness::{methods_for, run_method, HarnessConfig, HarnessError, Method, MethodResult};
 use crate::integrands::{standard_families, Family, Smoothness};
 use crate::spectrum::power_spectrum;
@@ -77,6 +79,30 @@ pub struct DiscrepancyCurve {
     pub pairs: Vec<[usize; 2]>,
     /// Mean 2-D D² per size, per pair.
     pub pair_values: Vec<Vec<f64>>,
+    /// Seeds averaged per point.
+    #[serde(default)]
+    pub seeds: usize,
+    /// Standard error of each mean joint D² (empty in reports written before it existed).
+    #[serde(default)]
+    pub joint_se: Vec<f64>,
+    /// Standard error of each mean pair D², per size, per pair.
+    #[serde(default)]
+    pub pair_se: Vec<Vec<f64>>,
+}
+
+impl DiscrepancyCurve {
+    /// max over pairs / min over pairs of the mean 2-D D², per size: 1 when every pair is as
+    /// good as every other (the paper's "consistent quality" in one number per N).
+    pub fn pair_spread(&self) -> Vec<f64> {
+        self.pair_values
+            .iter()
+            .map(|v| {
+                let max = v.iter().copied().fold(f64::MIN, f64::max);
+                let min = v.iter().copied().fold(f64::MAX, f64::min);
+                max / min
+            })
+            .collect()
+    }
 }
 
 /// Noise thresholds the baseline comparison uses (stated in the report).
@@ -226,7 +252,8 @@ fn sz16_words(registry: &Registry, request: &str, dims: usize, n: usize, seed: u
 pub fn discrepancy_curves(registry: &Registry, quick: bool) -> Vec<DiscrepancyCurve> {
     let max_log2 = if quick { 9 } else { 12 };
     let sizes: Vec<usize> = (4..=max_log2).map(|k| 1usize << k).collect();
-    let seeds: Vec<u64> = (0..if quick { 4 } else { 8 }).collect();
+    // Means of a heavy-tailed statistic: 16 seeds (quick) or 64 (full), with standard errors.
+    let seeds: Vec<u64> = (0..if quick { 16 } else { 64 }).collect();
     let pairs = curves::pair_list(16, false);
     [
         "art-owen-2",
@@ -252,6 +279,9 @@ pub fn discrepancy_curves(registry: &Registry, quick: bool) -> Vec<DiscrepancyCu
             joint: c.points.iter().map(|p| p.joint).collect(),
             pairs: c.pairs.clone(),
             pair_values: c.points.iter().map(|p| p.pairs.clone()).collect(),
+            seeds: seeds.len(),
+            joint_se: c.points.iter().map(|p| p.joint_se).collect(),
+            pair_se: c.points.iter().map(|p| p.pairs_se.clone()).collect(),
         }
     })
     .collect()
@@ -648,41 +678,84 @@ pub fn write_figures(
     )
     .map_err(fig)?;
     files.push("figure2_joint.png".into());
-    let mut pair_series = Vec::new();
-    // The ART pair: the oracles' curves lie on top of them (see the table).
-    for c in report
-        .discrepancy
-        .iter()
-        .filter(|c| c.scrambler.starts_with("art-owen"))
-    {
-        for (k, p) in c
-            .pairs
-            .iter()
-            .enumerate()
-            .filter(|(_, p)| [1, 2, 3, 5, 15].contains(&p[1]))
-        {
-            pair_series.push(Series {
-                label: format!("{} dims {},{}", c.scrambler, p[0], p[1]),
-                points: c
-                    .n
-                    .iter()
+    // Figure 2b: every pair (0, j), one figure per method, with ±2 SE bands.
+    for c in &report.discrepancy {
+        let mut pair_series = Vec::new();
+        let mut bands = Vec::new();
+        for (k, p) in c.pairs.iter().enumerate() {
+            let mean: Vec<(f64, f64)> =
+                c.n.iter()
                     .zip(&c.pair_values)
                     .map(|(n, v)| (*n as f64, v[k]))
+                    .collect();
+            bands.push(
+                mean.iter()
+                    .enumerate()
+                    .map(|(i, &(_, m))| {
+                        let se = c.pair_se.get(i).and_then(|v| v.get(k)).copied();
+                        let se = se.unwrap_or(0.0);
+                        (m - 2.0 * se, m + 2.0 * se)
+                    })
                     .collect(),
+            );
+            pair_series.push(Series {
+                label: format!("dims {},{}", p[0], p[1]),
+                points: mean,
             });
         }
+        let name = format!("figure2_pairs_{}.png", file_stem(&c.scrambler));
+        loglog_lines_banded(
+            &dir.join(&name),
+            &format!(
+                "Figure 2b: mean 2-D L2-star D² of sz16 pairs (0, j), {} ({} seeds, ±2 SE)",
+                c.scrambler, c.seeds
+            ),
+            "N (points)",
+            "mean D²",
+            &pair_series,
+            &bands,
+            &[-2.0],
+        )
+        .map_err(fig)?;
+        files.push(name);
     }
+    // Figure 2c: max/min over the 15 pairs against N, per method.
+    let spread: Vec<Series> = report
+        .discrepancy
+        .iter()
+        .map(|c| Series {
+            label: c.scrambler.clone(),
+            points: c
+                .n
+                .iter()
+                .zip(c.pair_spread())
+                .map(|(n, r)| (*n as f64, r))
+                .collect(),
+        })
+        .collect();
     loglog_lines(
-        &dir.join("figure2_pairs.png"),
-        "Figure 2b: mean 2-D L2-star D² of sz16 pairs: binary vs base-16 scrambling",
+        &dir.join("figure2_spread.png"),
+        "Figure 2c: max / min over pairs (0, j) of the mean 2-D D² (1 = every pair alike)",
         "N (points)",
-        "mean D²",
-        &pair_series,
-        &[-2.0],
+        "max / min",
+        &spread,
+        &[],
     )
     .map_err(fig)?;
-    files.push("figure2_pairs.png".into());
+    files.push("figure2_spread.png".into());
     Ok(files)
+}
+
+/// A scrambler request as a file-name part: `owen-oracle:base=16` → `owen-oracle_base-16`.
+fn file_stem(request: &str) -> String {
+    request
+        .chars()
+        .map(|c| match c {
+            ':' => '_',
+            '=' | ',' => '-',
+            c => c,
+        })
+        .collect()
 }
 
 /// The Markdown report.
@@ -798,13 +871,22 @@ pub fn markdown(report: &Report, figures: &[String], regressions: Option<&[Regre
             row("pair-lemma")
         );
     }
-    md += "\n## Discrepancy (Figure 2 data): mean L2-star D² of sz16\n\n| scrambler | N | joint 16-D | mean over pairs (0,j) |\n|---|---|---|---|\n";
+    md += "\n## Discrepancy (Figure 2 data): mean L2-star D² of sz16\n\nMeans over the seeds \
+           shown, ± 2 standard errors; two methods whose intervals overlap are not told apart by \
+           this many seeds. The spread is max / min over the 15 pairs (0, j) of the mean 2-D D².\n\n\
+           | scrambler | seeds | N | joint 16-D (± 2 SE) | mean over pairs (0,j) | spread |\n\
+           |---|---|---|---|---|---|\n";
     for c in &report.discrepancy {
+        let spread = c.pair_spread();
         for (k, n) in c.n.iter().enumerate() {
             let mean = c.pair_values[k].iter().sum::<f64>() / c.pair_values[k].len() as f64;
+            let se = c
+                .joint_se
+                .get(k)
+                .map_or(String::new(), |se| format!(" ± {:.1e}", 2.0 * se));
             md += &format!(
-                "| {} | {} | {:.4e} | {:.4e} |\n",
-                c.scrambler, n, c.joint[k], mean
+                "| {} | {} | {} | {:.4e}{se} | {:.4e} | {:.2} |\n",
+                c.scrambler, c.seeds, n, c.joint[k], mean, spread[k]
             );
         }
     }

@@ -151,3 +151,19 @@ fn a_value_exactly_at_a_threshold_is_not_a_regression() {
         assert!(compare(&base, &r).is_empty(), "{what}");
     }
 }
+
+/// Figure 2c's number: max over pairs / min over pairs of the mean 2-D D², per size.
+#[test]
+fn pair_spread_is_max_over_min_per_size() {
+    let c = gartowen_bench::report::DiscrepancyCurve {
+        scrambler: "x".into(),
+        n: vec![16, 32],
+        joint: vec![1.0, 0.5],
+        pairs: vec![[0, 1], [0, 2], [0, 3]],
+        pair_values: vec![vec![2.0, 8.0, 4.0], vec![3.0, 3.0, 3.0]],
+        seeds: 4,
+        joint_se: vec![0.1, 0.1],
+        pair_se: vec![vec![0.0; 3]; 2],
+    };
+    assert_eq!(c.pair_spread(), vec![4.0, 1.0]);
+}
