@@ -341,6 +341,59 @@ pub enum Panel {
     },
 }
 
+/// Spectrum grey levels on a log scale: black at 0.01 or less, white at 4 or more (the DC term
+/// is drawn white).
+const SHADE_RANGE: (f64, f64) = (1e-2, 4.0);
+
+/// The grey of spectrum value `v` (see [`SHADE_RANGE`]).
+pub fn spectrum_shade(v: f64) -> RGBColor {
+    let (lo, hi) = SHADE_RANGE;
+    let t = ((v.max(lo).ln() - lo.ln()) / (hi.ln() - lo.ln())).clamp(0.0, 1.0);
+    let g = (t * 255.0) as u8;
+    RGBColor(g, g, g)
+}
+
+/// The grey-scale key of the spectra: a vertical bar from 0.01 (black) to 4 (white) with
+/// labelled values, its top-left corner at (x, y).
+fn draw_grey_key(
+    root: &DrawingArea<BitMapBackend, Shift>,
+    (x, y): (i32, i32),
+    height: i32,
+) -> Result<(), FigureError> {
+    let (lo, hi) = SHADE_RANGE;
+    root.draw(&Text::new(
+        "|spectrum|²/N",
+        (x - 10, y - 16),
+        (FONT, 12).into_font(),
+    ))
+    .map_err(fail)?;
+    for k in 0..height {
+        // Top = white (large), bottom = black (small), log spaced.
+        let t = 1.0 - k as f64 / (height - 1) as f64;
+        let v = (lo.ln() + t * (hi.ln() - lo.ln())).exp();
+        root.draw(&Rectangle::new(
+            [(x, y + k), (x + 16, y + k + 1)],
+            spectrum_shade(v).filled(),
+        ))
+        .map_err(fail)?;
+    }
+    root.draw(&Rectangle::new([(x, y), (x + 16, y + height)], BLACK))
+        .map_err(fail)?;
+    for (v, label) in [(hi, "≥ 4"), (1.0, "1"), (0.1, "0.1"), (lo, "≤ 0.01")] {
+        let t = (v.ln() - lo.ln()) / (hi.ln() - lo.ln());
+        let yy = y + ((1.0 - t) * (height - 1) as f64) as i32;
+        root.draw(&Text::new(label, (x + 20, yy - 6), (FONT, 11).into_font()))
+            .map_err(fail)?;
+    }
+    root.draw(&Text::new(
+        "(DC white)",
+        (x - 4, y + height + 6),
+        (FONT, 11).into_font(),
+    ))
+    .map_err(fail)?;
+    Ok(())
+}
+
 fn draw_panel(
     area: &DrawingArea<BitMapBackend, Shift>,
     caption: &str,
@@ -372,14 +425,7 @@ fn draw_panel(
                 .margin(4)
                 .build_cartesian_2d(-f..f + 1, -f..f + 1)
                 .map_err(fail)?;
-            // Grey levels on a log scale: black = 0.01 or less, white = 4 or more; the DC term is
-            // drawn white.
-            let shade = |v: f64| {
-                let t = ((v.max(1e-2).ln() - 1e-2f64.ln()) / (4f64.ln() - 1e-2f64.ln()))
-                    .clamp(0.0, 1.0);
-                let g = (t * 255.0) as u8;
-                RGBColor(g, g, g)
-            };
+            let shade = spectrum_shade;
             chart
                 .draw_series((0..side * side).map(|k| {
                     let (r, c) = ((k / side) as i64 - f, (k % side) as i64 - f);
@@ -403,7 +449,14 @@ pub fn panel_grid(
     let cols = rows.iter().map(|r| r.1.len()).max().unwrap_or(1);
     let cell = 150u32;
     let (left, top) = (150u32, 40u32);
-    let size = (left + cell * cols as u32, top + cell * rows.len() as u32);
+    let key = rows
+        .iter()
+        .any(|r| r.1.iter().any(|p| matches!(p, Panel::Spectrum { .. })));
+    let key_width = if key { 110 } else { 0 };
+    let size = (
+        left + cell * cols as u32 + key_width,
+        top + cell * rows.len() as u32,
+    );
     let root = BitMapBackend::new(path, size).into_drawing_area();
     root.fill(&WHITE).map_err(fail)?;
     root.draw(&Text::new(
@@ -427,5 +480,61 @@ pub fn panel_grid(
             draw_panel(&area, &caption, panel)?;
         }
     }
+    if key {
+        let x = (left + cell * cols as u32 + 30) as i32;
+        draw_grey_key(&root, (x, top as i32 + 30), 200)?;
+    }
+    root.present().map_err(fail)
+}
+
+/// All pairs of `dims` coordinates as a matrix: cell (row i, column j) for i < j shows the
+/// scatter of coordinates (i, j), cell (j, i) below the diagonal its power spectrum, with the
+/// grey-scale key at the right. `scatter(i, j)` gives the points of a pair.
+pub fn pair_matrix(
+    path: &Path,
+    title: &str,
+    dims: usize,
+    scatter: &dyn Fn(usize, usize) -> Vec<[f64; 2]>,
+    max_freq: usize,
+) -> Result<(), FigureError> {
+    register_fonts();
+    let cell = 112u32;
+    let (left, top, key_width) = (30u32, 40u32, 120u32);
+    let side = cell * dims as u32;
+    let root =
+        BitMapBackend::new(path, (left + side + key_width, top + side + 10)).into_drawing_area();
+    root.fill(&WHITE).map_err(fail)?;
+    root.draw(&Text::new(
+        title.to_string(),
+        (10, 8),
+        (FONT, 16).into_font(),
+    ))
+    .map_err(fail)?;
+    for i in 0..dims {
+        for j in i + 1..dims {
+            let pts = scatter(i, j);
+            let at = |r: usize, c: usize| {
+                root.clone().shrink(
+                    (
+                        (left + cell * c as u32) as i32,
+                        (top + cell * r as u32) as i32,
+                    ),
+                    (cell, cell),
+                )
+            };
+            draw_panel(
+                &at(i, j),
+                &format!("dims {i},{j}"),
+                &Panel::Scatter(pts.clone()),
+            )?;
+            let values = crate::spectrum::power_spectrum(&pts, max_freq);
+            draw_panel(
+                &at(j, i),
+                &format!("spectrum {i},{j}"),
+                &Panel::Spectrum { values, max_freq },
+            )?;
+        }
+    }
+    draw_grey_key(&root, ((left + side + 40) as i32, top as i32 + 40), 240)?;
     root.present().map_err(fail)
 }

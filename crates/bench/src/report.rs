@@ -6,7 +6,8 @@
 //! run; baselines compare only the ratios.
 
 use crate::figures::{
-    loglog_lines, loglog_lines_banded, loglog_points, panel_grid, FigureError, Panel, Series,
+    loglog_lines, loglog_lines_banded, loglog_points, pair_matrix, panel_grid, FigureError, Panel,
+    Series,
 };
 use crate::harness::{methods_for, run_method, HarnessConfig, HarnessError, Method, MethodResult};
 use crate::integrands::{standard_families, Family, Smoothness};
@@ -612,7 +613,28 @@ pub fn write_figures(
         .map_err(fig)?;
         files.push(name);
     }
-    // Figure 1: sz16, first 8 dimensions, pairs (j, j+1).
+    // Figure 1 (the paper's): every one of the 28 pairs of the first 8 dimensions at N = 256,
+    // one matrix per method (scatter above the diagonal, spectrum below, grey key).
+    for (label, request) in [
+        ("unscrambled", "none"),
+        ("ArtOwen2", "art-owen-2"),
+        ("ArtOwen16P", "art-owen-16p"),
+    ] {
+        let n = 256;
+        let w = sz16_words(registry, request, 8, n, 1);
+        let value = |i: usize, j: usize| w[i * 8 + j] as f64 * 2f64.powi(-32);
+        let name = format!("figure1_sz16_n{n}_pairs_{}.png", file_stem(request));
+        pair_matrix(
+            &dir.join(&name),
+            &format!("Figure 1: sz16, {label}, N = {n}: all 28 pairs of dims 0..7"),
+            8,
+            &|a, b| (0..n).map(|i| [value(i, a), value(i, b)]).collect(),
+            24,
+        )
+        .map_err(fig)?;
+        files.push(name);
+    }
+    // Consecutive pairs (j, j+1) side by side across methods, at two sizes.
     for n in [256usize, 512] {
         let pairs: Vec<[usize; 2]> = (0..7).map(|j| [j, j + 1]).collect();
         let mut rows = Vec::new();

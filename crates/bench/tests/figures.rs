@@ -88,3 +88,15 @@ fn log_axes_label_every_decade_and_every_power_of_the_base() {
     }
     assert!(!log_ticks(3e-4, 7e-4, None).is_empty());
 }
+
+/// The key's grey scale: black at or below 0.01, white at or above 4, darker for smaller values.
+#[test]
+fn spectrum_greys_follow_the_key() {
+    use gartowen_bench::figures::spectrum_shade;
+    let g = |v: f64| spectrum_shade(v).0;
+    assert_eq!((g(1e-5), g(0.01), g(4.0), g(100.0)), (0, 0, 255, 255));
+    let vs = [0.02, 0.05, 0.1, 0.3, 1.0, 2.0, 3.5];
+    assert!(vs.windows(2).all(|w| g(w[0]) < g(w[1])), "{:?}", vs.map(g));
+    let c = spectrum_shade(0.7);
+    assert!(c.0 == c.1 && c.1 == c.2);
+}
