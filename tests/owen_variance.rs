@@ -85,6 +85,9 @@ fn exact(points: &[Vec<u64>], q: u32, shape: &[u32]) -> f64 {
     gartowen::discrepancy::rational::to_f64(&owen_box_variance(points, 32, q, shape).unwrap())
 }
 
+/// (name, points, q, shape).
+type Case<'a> = (&'a str, &'a Vec<Vec<u64>>, u32, Vec<u32>);
+
 #[test]
 fn exact_owen_variance_agrees_with_oracle_replicates_and_rejects_a_top_3_digit_scramble() {
     const R: u64 = 2000;
@@ -92,7 +95,7 @@ fn exact_owen_variance_agrees_with_oracle_replicates_and_rejects_a_top_3_digit_s
     let sobol = sobol_2d(64);
     let random = random_2d(64, 5);
     let clustered = clustered_2d(6);
-    let cases: Vec<(&str, &Vec<Vec<u64>>, u32, Vec<u32>)> = vec![
+    let cases: Vec<Case> = vec![
         ("sobol", &sobol, 1, vec![3, 5]),
         ("sobol", &sobol, 1, vec![4, 4]),
         ("sobol", &sobol, 1, vec![1, 2]),
