@@ -1,6 +1,7 @@
 //! Speed against error: integrands with exact integrals, the RMSE harness over every sequence
 //! and scrambler, point-set spectra, and the `gartowen report` figures and tables.
 
+pub mod fidelity;
 pub mod figures;
 pub mod harness;
 pub mod integrands;

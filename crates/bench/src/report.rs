@@ -152,6 +152,10 @@ pub struct Report {
     pub quality: Vec<QualityRow>,
     /// Figure 2 data.
     pub discrepancy: Vec<DiscrepancyCurve>,
+    /// Estimator variance against the exact Owen variance, per scrambler (empty in reports
+    /// written before it existed).
+    #[serde(default)]
+    pub owen_variance: Vec<crate::fidelity::VarianceRow>,
     /// Baseline thresholds.
     pub thresholds: Thresholds,
     /// Worker threads used.
@@ -382,6 +386,15 @@ pub fn build_report(
     progress(methods.len() + 2, total, "randomization quality");
     let discrepancy = discrepancy_curves(registry, config.quick);
     progress(total, total, "discrepancy curves");
+    let with_base: Vec<(String, u32)> = speed
+        .iter()
+        .map(|s| (s.scrambler.clone(), s.base))
+        .collect();
+    let owen_variance = crate::fidelity::variance_ratios(
+        registry,
+        &with_base,
+        if config.quick { 200 } else { 1000 },
+    );
     let slopes = slope_rows(&results, &families);
     Ok(Report {
         schema: REPORT_SCHEMA.into(),
@@ -401,6 +414,7 @@ pub fn build_report(
         speed,
         quality,
         discrepancy,
+        owen_variance,
         threads: rayon::current_num_threads(),
         seconds: start.elapsed().as_secs_f64(),
     })
@@ -868,9 +882,13 @@ pub fn markdown(report: &Report, figures: &[String], regressions: Option<&[Regre
     md += "\n## How close to Owen\n\n\
            Per law family of `verify --level quick`, one character per tree depth 0, 1, 2, …: \
            `.` no deviation detected at the stated power, `x` a deviation at the per-test level, \
-           `-` not tested. Families a scrambler does not claim are measured, not judged.\n\n\
-           | scrambler | claim | ns/coord | node-law | pair-law | flip-rank | collisions | pair-lemma |\n\
-           |---|---|---|---|---|---|---|---|\n";
+           `-` not tested. Families a scrambler does not claim are measured, not judged. \
+           The variance columns: the variance over seeds of the estimate of a box's volume \
+           (64 fixed pseudo-random points in 2-D, boxes of 1, 2 and 3 digits of the scrambler's \
+           base) divided by its exact value under Owen's scrambling, ± 2 standard errors: 1 is \
+           Owen's law (`gartowen::oracles::owen_variance`).\n\n\
+           | scrambler | claim | ns/coord | var. ratio level 1 | level 2 | level 3 | node-law | pair-law | flip-rank | collisions | pair-lemma |\n\
+           |---|---|---|---|---|---|---|---|---|---|---|\n";
     for s in &report.speed {
         let Some(q) = report.quality.iter().find(|q| q.scrambler == s.scrambler) else {
             continue;
@@ -881,11 +899,25 @@ pub fn markdown(report: &Report, figures: &[String], regressions: Option<&[Regre
                 .find(|(f, _)| f == family)
                 .map_or("–".to_string(), |(_, r)| format!("`{r}`"))
         };
+        let var = report
+            .owen_variance
+            .iter()
+            .find(|v| v.scrambler == s.scrambler);
+        let level = |k: usize| {
+            var.and_then(|v| Some((*v.ratio.get(k)?, *v.ratio_se.get(k)?)))
+                .filter(|(r, _)| r.is_finite())
+                .map_or("–".to_string(), |(r, se)| {
+                    format!("{r:.2} ± {:.2}", 2.0 * se)
+                })
+        };
         md += &format!(
-            "| {} | {} | {:.1} | {} | {} | {} | {} | {} |\n",
+            "| {} | {} | {:.1} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
             s.scrambler,
             q.claim,
             s.ns_per_coord,
+            level(0),
+            level(1),
+            level(2),
             row("node-law"),
             row("pair-law"),
             row("flip-rank"),

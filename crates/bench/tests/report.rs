@@ -167,3 +167,30 @@ fn pair_spread_is_max_over_min_per_size() {
     };
     assert_eq!(c.pair_spread(), vec![4.0, 1.0]);
 }
+
+/// The report's variance ratios: Owen's oracle sits at 1 within its error at every level, the
+/// identity ("none") has zero variance (ratio 0), rows are the same for one and two threads.
+#[test]
+fn owen_variance_ratios_put_the_oracle_at_one_and_the_identity_at_zero() {
+    use gartowen_bench::fidelity::variance_ratios;
+    let registry = gartowen::registry();
+    let requests = vec![("owen-oracle".to_string(), 2), ("none".to_string(), 2)];
+    let rows = variance_ratios(&registry, &requests, 400);
+    let oracle = &rows[0];
+    assert_eq!(oracle.levels, vec![1, 2, 3]);
+    for (r, se) in oracle.ratio.iter().zip(&oracle.ratio_se) {
+        // 4 SE: two-sided false-alarm rate 6e-5 per level under the CLT.
+        assert!((r - 1.0).abs() < 4.0 * se, "oracle ratio {r} ± {se}");
+    }
+    assert!(
+        rows[1].ratio.iter().all(|&r| r == 0.0),
+        "{:?}",
+        rows[1].ratio
+    );
+    let one = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .unwrap()
+        .install(|| variance_ratios(&registry, &requests, 400));
+    assert_eq!(one, rows);
+}

@@ -44,6 +44,7 @@ pub fn report(slope: f64, rmse_last: f64, ratio: f64) -> Report {
         }],
         quality: vec![],
         discrepancy: vec![],
+        owen_variance: vec![],
         thresholds: Thresholds {
             slope: 0.15,
             rmse_factor: 1.75,
