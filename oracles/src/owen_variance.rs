@@ -98,7 +98,21 @@ mod tests {
             owen_box_variance(&[vec![3, 5]], 8, 1, &[0, 0]).unwrap(),
             BigRational::zero()
         );
-        // Too deep for the words.
+        // Base 4: 0x00 and 0x40 differ in their first base-4 digit (00 | 01): Var = 1/16;
+        // one level deeper in base 2 they would share it.
+        assert_eq!(
+            owen_box_variance(&[vec![0], vec![0x40]], 8, 2, &[1]),
+            Some(r(1, 16))
+        );
+        assert_eq!(
+            owen_box_variance(&[vec![0], vec![0x40]], 8, 1, &[1]),
+            Some(r(1, 4))
+        );
+        // The deepest box the words allow (q·k = W) is accepted; one digit more is not.
+        assert_eq!(
+            owen_box_variance(&[vec![0]], 8, 2, &[4]),
+            Some(r(255, 65536))
+        );
         assert_eq!(owen_box_variance(&[vec![0]], 8, 3, &[3]), None);
     }
 }
