@@ -29,11 +29,11 @@ pub struct VarianceRow {
     pub seeds: u64,
     /// Box level (digits) per entry of `ratio`.
     pub levels: Vec<u32>,
-    /// Sample variance / exact Owen variance, per level (NaN when the exact variance is 0 or
-    /// fewer than 10 points are expected in the box over all seeds).
-    pub ratio: Vec<f64>,
+    /// Sample variance / exact Owen variance, per level (`None` when the exact variance is 0
+    /// or fewer than 10 points are expected in the box over all seeds; JSON `null`).
+    pub ratio: Vec<Option<f64>>,
     /// Standard error of each ratio.
-    pub ratio_se: Vec<f64>,
+    pub ratio_se: Vec<Option<f64>>,
 }
 
 /// The fixed 2-D point set (32-bit coordinates).
@@ -100,8 +100,8 @@ pub fn variance_ratios(
                 let levels = shape[0] + shape[1];
                 let hits = seeds as f64 * POINTS as f64 * 2f64.powi(-((levels * q) as i32));
                 let known = v > 0.0 && hits >= 10.0;
-                ratio.push(if known { s2 / v } else { f64::NAN });
-                ratio_se.push(if known { se / v } else { f64::NAN });
+                ratio.push(known.then_some(s2 / v));
+                ratio_se.push(known.then_some(se / v));
             }
             VarianceRow {
                 scrambler: request.clone(),

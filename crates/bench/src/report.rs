@@ -904,8 +904,7 @@ pub fn markdown(report: &Report, figures: &[String], regressions: Option<&[Regre
             .iter()
             .find(|v| v.scrambler == s.scrambler);
         let level = |k: usize| {
-            var.and_then(|v| Some((*v.ratio.get(k)?, *v.ratio_se.get(k)?)))
-                .filter(|(r, _)| r.is_finite())
+            var.and_then(|v| Some(((*v.ratio.get(k)?)?, (*v.ratio_se.get(k)?)?)))
                 .map_or("–".to_string(), |(r, se)| {
                     format!("{r:.2} ± {:.2}", 2.0 * se)
                 })

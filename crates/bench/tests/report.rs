@@ -169,24 +169,33 @@ fn pair_spread_is_max_over_min_per_size() {
 }
 
 /// The report's variance ratios: Owen's oracle sits at 1 within its error at every level, the
-/// identity ("none") has zero variance (ratio 0), rows are the same for one and two threads.
+/// identity ("none") has zero variance (ratio 0), too few expected hits give no ratio, rows are
+/// the same for one and two threads and survive a JSON round trip (a baseline must load).
 #[test]
 fn owen_variance_ratios_put_the_oracle_at_one_and_the_identity_at_zero() {
-    use gartowen_bench::fidelity::variance_ratios;
+    use gartowen_bench::fidelity::{variance_ratios, VarianceRow};
     let registry = gartowen::registry();
     let requests = vec![("owen-oracle".to_string(), 2), ("none".to_string(), 2)];
     let rows = variance_ratios(&registry, &requests, 400);
     let oracle = &rows[0];
     assert_eq!(oracle.levels, vec![1, 2, 3]);
     for (r, se) in oracle.ratio.iter().zip(&oracle.ratio_se) {
+        let (r, se) = (r.unwrap(), se.unwrap());
         // 4 SE: two-sided false-alarm rate 6e-5 per level under the CLT.
         assert!((r - 1.0).abs() < 4.0 * se, "oracle ratio {r} ± {se}");
     }
     assert!(
-        rows[1].ratio.iter().all(|&r| r == 0.0),
+        rows[1].ratio.iter().all(|&r| r == Some(0.0)),
         "{:?}",
         rows[1].ratio
     );
+    // Base 256, 3 digits: 64 · 400 · 2^-24 expected hits, far under 10: no ratio.
+    let big = variance_ratios(&registry, &[("owen-oracle:base=256".to_string(), 256)], 400);
+    assert_eq!(big[0].ratio[2], None);
+    assert!(big[0].ratio[0].is_some());
+    let json = serde_json::to_string(&rows).unwrap();
+    let back: Vec<VarianceRow> = serde_json::from_str(&json).unwrap();
+    assert_eq!(back, rows);
     let one = rayon::ThreadPoolBuilder::new()
         .num_threads(1)
         .build()

@@ -38,8 +38,13 @@ fn quick_report_writes_figures_and_the_baseline_gate_works() {
         "efficiency_gaussian-2d.png",
         "figure1_sz16_n256.png",
         "figure1_sz16_n512.png",
+        "figure1_sz16_n256_pairs_none.png",
+        "figure1_sz16_n256_pairs_art-owen-2.png",
+        "figure1_sz16_n256_pairs_art-owen-16p.png",
         "figure2_joint.png",
-        "figure2_pairs.png",
+        "figure2_pairs_art-owen-2.png",
+        "figure2_pairs_art-owen-16p.png",
+        "figure2_spread.png",
     ] {
         let bytes = std::fs::read(path(&format!("a/{f}"))).unwrap();
         if f.ends_with(".png") {
@@ -49,6 +54,9 @@ fn quick_report_writes_figures_and_the_baseline_gate_works() {
     let md = std::fs::read_to_string(path("a/report.md")).unwrap();
     assert!(md.contains("## Convergence slopes"));
     assert!(md.contains("| owen-oracle:base=16 | 16 |"));
+    // How close to Owen: the variance columns, the identity at ratio 0.
+    assert!(md.contains("var. ratio level 1"));
+    assert!(md.contains("| none | nested | "));
 
     // The same seeds reproduce every error figure; doctor the baseline to be better than
     // possible so that this run regresses.
