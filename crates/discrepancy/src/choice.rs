@@ -61,7 +61,8 @@ pub enum MethodChoice {
     Auto,
     /// Plain f64 (what most tools do; shown for comparison).
     Naive,
-    /// Double-double compensated sums.
+    /// Double-double compensated sums with the error bound proved in `proofs/DdSum.v`; where its
+    /// hypotheses fail at run time, the exact method (within its budget).
     Compensated,
     /// Exact rational.
     Exact,
@@ -117,7 +118,17 @@ pub fn compute(points: Points, kind: Kind, method: MethodChoice) -> Result<Discr
     let fast_applies = kind == Kind::L2Star && points.dims == 2;
     Ok(match method {
         MethodChoice::Naive => naive::naive(points, kind),
-        MethodChoice::Compensated => compensated::compensated(points, kind),
+        MethodChoice::Compensated => {
+            // The proved bound's hypotheses (exact coordinates, no overflow or underflow) are
+            // checked at run time; where they fail the value is computed exactly instead,
+            // within the exact method's budget (else the unbounded compensated value).
+            let c = compensated::compensated(points, kind);
+            if c.rel_error_bound.is_none() && exact_within_budget(points).is_ok() {
+                exact::exact(points, kind)
+            } else {
+                c
+            }
+        }
         MethodChoice::Exact => {
             exact_within_budget(points)?;
             exact::exact(points, kind)

@@ -2,9 +2,13 @@
 //! sum (Σ_ij = Σ_i p_ii + 2Σ_{i<j} p_ij), in parallel over fixed chunks of rows whose partial
 //! sums are combined in chunk order, so the f64 result is bit-identical for any thread count.
 //!
-//! For d ≤ 4 each product is formed exactly in double-double; for larger d products are plain
-//! f64 (at most d − 1 roundings each), which the error bound accounts for.
+//! For d ≤ 4 each product is formed in double-double; for larger d products are plain f64 (d
+//! roundings each), summed in blocks by f64 pairwise sums and the blocks in double-double.
+//! Every addition and product sees non-negative operands, the case `proofs/DdSum.v` proves;
+//! [`crate::bound`] evaluates that theorem's bound for exactly this summation order, after
+//! checking its hypotheses at run time, and the final combination is exact in rationals.
 
+use crate::bound::{self, Layout};
 use crate::dd::Dd;
 use crate::{Discrepancy, Kind, Method, Points};
 use rayon::prelude::*;
@@ -15,30 +19,52 @@ const ROWS_PER_CHUNK: usize = 32;
 /// Dimensions up to which products are formed exactly.
 const EXACT_PRODUCT_DIMS: usize = 4;
 
-/// The single factor in double-double: exact for coordinates of ≤ [`crate::EXACT_FLOAT_BITS`] bits (every part below is
-/// an exact f64 and the one product is error-free).
+/// The single factor in double-double. Every double-double operation sees non-negative
+/// normalized operands, the case `proofs/DdSum.v` bounds; the f64 ingredients are exact for
+/// coordinates of ≤ [`crate::EXACT_FLOAT_BITS`] bits (see [`crate::bound`]).
 #[inline(always)]
 fn single_dd(kind: Kind, x: f64) -> Dd {
     match kind {
-        Kind::L2Star => Dd::from(1.0 - x).mul_f64(1.0 + x), // 1 − x² = (1 − x)(1 + x)
+        Kind::L2Star => Dd::from(1.0 - x).mul(Dd::from(1.0 + x)), // 1 − x² = (1 − x)(1 + x)
         Kind::Centered => {
             let a = (x - 0.5).abs(); // 1 + a/2 − a²/2 = 1 + (a/2)(1 − a)
-            Dd::from(0.5 * a).mul_f64(1.0 - a).add_f64(1.0)
+            Dd::from(0.5 * a).mul(Dd::from(1.0 - a)).add(Dd::from(1.0))
         }
         Kind::WrapAround => Dd::from(1.0),
-        Kind::GeneralizedL2 => Dd::from(x).mul_f64(-0.5 * x).add_f64(1.5), // (3 − x²)/2
+        // (3 − x²)/2 = 1 + (½(1 − x))(1 + x)
+        Kind::GeneralizedL2 => Dd::from(0.5 * (1.0 - x))
+            .mul(Dd::from(1.0 + x))
+            .add(Dd::from(1.0)),
     }
 }
 
-/// The pair factor in double-double (exact as above; only WD's t(1 − t) needs the product).
+/// WD's pair factor 3/2 − t(1 − t) in the form 5/4 + (t − ½)², whose terms are non-negative.
+#[inline(always)]
+fn wd_center(x: f64, y: f64) -> f64 {
+    ((x - y).abs() - 0.5).abs()
+}
+
+/// The pair factor in double-double (exact as an f64 except WD's square).
 #[inline(always)]
 fn pair_dd(kind: Kind, x: f64, y: f64) -> Dd {
     match kind {
         Kind::WrapAround => {
-            let t = (x - y).abs();
-            Dd::from(-t).mul_f64(1.0 - t).add_f64(1.5)
+            let c = Dd::from(wd_center(x, y));
+            c.mul(c).add(Dd::from(1.25))
         }
         _ => Dd::from(kind.pair(x, y)),
+    }
+}
+
+/// The pair factor in f64 for the products of d > 4 (WD: two roundings, within 2u).
+#[inline(always)]
+fn pair_f64(kind: Kind, x: f64, y: f64) -> f64 {
+    match kind {
+        Kind::WrapAround => {
+            let c = wd_center(x, y);
+            1.25 + c * c
+        }
+        _ => kind.pair(x, y),
     }
 }
 
@@ -51,7 +77,12 @@ fn product(kind: Kind, a: &[f64], b: &[f64], exact: bool) -> Dd {
         }
         p
     } else {
-        Dd::from(a.iter().zip(b).map(|(&x, &y)| kind.pair(x, y)).product())
+        Dd::from(
+            a.iter()
+                .zip(b)
+                .map(|(&x, &y)| pair_f64(kind, x, y))
+                .product(),
+        )
     }
 }
 
@@ -90,7 +121,7 @@ fn off_diagonal_blocks(
                 *p *= pair(ak, y);
             }
         }
-        off = off.add_f64(pairwise(prod));
+        off = off.add(Dd::from(pairwise(prod)));
         start += len;
     }
     off
@@ -116,13 +147,10 @@ pub fn compensated(points: Points, kind: Kind) -> Discrepancy {
             let mut s2 = Dd::default();
             for i in c * ROWS_PER_CHUNK..((c + 1) * ROWS_PER_CHUNK).min(n) {
                 let a = &xs[i * d..(i + 1) * d];
-                let single = if exact_products {
-                    a.iter()
-                        .skip(1)
-                        .fold(single_dd(kind, a[0]), |p, &x| p.mul(single_dd(kind, x)))
-                } else {
-                    Dd::from(a.iter().map(|&x| kind.single(x)).product())
-                };
+                let single = a
+                    .iter()
+                    .skip(1)
+                    .fold(single_dd(kind, a[0]), |p, &x| p.mul(single_dd(kind, x)));
                 s1 = s1.add(single);
                 let off = if exact_products {
                     let mut off = Dd::default();
@@ -135,7 +163,7 @@ pub fn compensated(points: Points, kind: Kind) -> Discrepancy {
                     // One monomorphized loop per kind keeps the pair factor branch-free.
                     match kind {
                         Kind::L2Star => off_diagonal_blocks(
-                            |x, y| Kind::L2Star.pair(x, y),
+                            |x, y| pair_f64(Kind::L2Star, x, y),
                             a,
                             &cols,
                             i,
@@ -143,7 +171,7 @@ pub fn compensated(points: Points, kind: Kind) -> Discrepancy {
                             &mut buf,
                         ),
                         Kind::Centered => off_diagonal_blocks(
-                            |x, y| Kind::Centered.pair(x, y),
+                            |x, y| pair_f64(Kind::Centered, x, y),
                             a,
                             &cols,
                             i,
@@ -151,7 +179,7 @@ pub fn compensated(points: Points, kind: Kind) -> Discrepancy {
                             &mut buf,
                         ),
                         Kind::WrapAround => off_diagonal_blocks(
-                            |x, y| Kind::WrapAround.pair(x, y),
+                            |x, y| pair_f64(Kind::WrapAround, x, y),
                             a,
                             &cols,
                             i,
@@ -159,7 +187,7 @@ pub fn compensated(points: Points, kind: Kind) -> Discrepancy {
                             &mut buf,
                         ),
                         Kind::GeneralizedL2 => off_diagonal_blocks(
-                            |x, y| Kind::GeneralizedL2.pair(x, y),
+                            |x, y| pair_f64(Kind::GeneralizedL2, x, y),
                             a,
                             &cols,
                             i,
@@ -180,34 +208,124 @@ pub fn compensated(points: Points, kind: Kind) -> Discrepancy {
         s1 = s1.add(a);
         s2 = s2.add(b);
     }
-    let nf = n as f64;
-    // c1·S1/N + S2/N² + c0, all in double-double. The divisions by N are double-double
-    // divisions (exact remainder), not divisions of the parts: for N not a power of two a
-    // rounded hi/N alone costs ε·|S1/N|, which the cancellation against c0 magnifies far
-    // past the bound (seen at N = 24, 3-D: relative error 9e-15 against a claimed 1.1e-16).
-    let t1 = s1.div_f64(nf).mul_f64(kind.c1(d));
-    let t2 = s2.div_f64(nf).div_f64(nf);
-    // c0 = (n/m)^d enters as a double-double from the exact rational: rounding it to one f64
-    // would alone cost ~1e-17 absolute, far more than D² can afford.
-    let c0 = crate::rational::to_dd(&crate::rational::c0(kind, d));
-    let total = t1.add(t2).add(c0);
-    let value = total.value();
-    let scale = c0.hi.abs() + t1.hi.abs() + t2.hi.abs();
-    let eps = f64::EPSILON;
-    // Products: exact in double-double up to a few ε² (d ≤ 4), else ≤ d·ε relative each.
-    // Double-double sums and the final combination: a few ε² of the scale. Then one rounding.
-    let product_err = if exact_products {
-        8.0 * eps * eps
-    } else {
-        d as f64 * eps
+    let layout = Layout {
+        n,
+        d,
+        dd_products: exact_products,
+        rows_per_chunk: ROWS_PER_CHUNK,
+        block: BLOCK,
     };
-    let abs_err = (product_err + 16.0 * eps * eps) * scale;
-    let bound = abs_err / value.abs() + 0.5 * eps;
+    let eps = if n > 0 && bound::hypotheses_hold(points, kind) {
+        bound::sum_bounds(kind, layout)
+    } else {
+        None
+    };
+    let (value, rel_error_bound) = bound::combine(kind, n, d, s1, s2, eps);
     Discrepancy {
         kind,
         method: Method::Compensated,
         value,
         exact: None,
-        rel_error_bound: points.float_bound(value, bound),
+        rel_error_bound,
+    }
+}
+
+/// The second path for the factor claims the proof takes as hypotheses (`bound.rs`): at
+/// coordinates of ≤ 50 bits, the f64 pair factors of L2-star, CD and GL2 are exact, WD's is
+/// within 2u, and every double-double factor is within (1 + 20u²)(1 + 10u²) − 1, checked
+/// against the exact integer factors of [`Kind::single_int`] and [`Kind::pair_int`].
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use gartowen_core::SplitMix64;
+    use num_bigint::BigUint;
+    use num_rational::BigRational;
+    use num_traits::Signed;
+
+    fn q(x: f64) -> BigRational {
+        BigRational::from_float(x).expect("finite")
+    }
+
+    fn ratio(num: BigUint, den: u32) -> BigRational {
+        BigRational::new(num.into(), (BigUint::from(1u8) << den as usize).into())
+    }
+
+    fn pair_exact(kind: Kind, x: u64, y: u64) -> BigRational {
+        let (limbs, den) = kind.pair_int(x, y, 50);
+        let num = BigUint::from(limbs[0])
+            + (BigUint::from(limbs[1]) << 64usize)
+            + (BigUint::from(limbs[2]) << 128usize);
+        ratio(num, den)
+    }
+
+    /// 50-bit coordinates: the edges (0, ½ ± 2^-50, 1 − 2^-50, …) and random ones.
+    fn coordinates() -> Vec<u64> {
+        let top = 1u64 << 50;
+        let mut v = vec![
+            0,
+            1,
+            2,
+            top / 4,
+            top / 2 - 1,
+            top / 2,
+            top / 2 + 1,
+            top - 2,
+            top - 1,
+        ];
+        let mut rng = SplitMix64::new(9);
+        v.extend((0..60).map(|_| rng.next_u64() >> 14));
+        v
+    }
+
+    fn to_f64(x: u64) -> f64 {
+        x as f64 * 2f64.powi(-50)
+    }
+
+    #[test]
+    fn factors_at_fifty_bit_coordinates_are_within_their_stated_errors() {
+        let u = q(f64::EPSILON / 2.0);
+        let phi_dd = (q(1.0) + q(20.0) * &u * &u) * (q(1.0) + q(10.0) * &u * &u) - q(1.0);
+        let xs = coordinates();
+        for kind in Kind::ALL {
+            for &x in &xs {
+                let (num, den) = kind.single_int(x, 50);
+                let exact = ratio(num, den);
+                let s = single_dd(kind, to_f64(x));
+                assert!(
+                    s.hi >= 0.0 && s.lo.abs() <= s.hi * f64::EPSILON,
+                    "{kind:?} {x}"
+                );
+                let err = (q(s.hi) + q(s.lo) - &exact).abs();
+                assert!(err <= &phi_dd * &exact, "{kind:?} single at {x}");
+                for &y in &xs {
+                    let exact = pair_exact(kind, x, y);
+                    let (fx, fy) = (to_f64(x), to_f64(y));
+                    let f = q(pair_f64(kind, fx, fy));
+                    let p = pair_dd(kind, fx, fy);
+                    let dd_err = (q(p.hi) + q(p.lo) - &exact).abs();
+                    if kind == Kind::WrapAround {
+                        assert!((f - &exact).abs() <= q(2.0) * &u * &exact, "WD at {x}, {y}");
+                        assert!(dd_err <= &phi_dd * &exact, "WD dd at {x}, {y}");
+                    } else {
+                        assert_eq!(f, exact, "{kind:?} f64 pair at {x}, {y}");
+                        assert_eq!(p, Dd::from(pair_f64(kind, fx, fy)));
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn cd_pair_factor_rounds_past_fifty_bits() {
+        // Two 53-bit coordinates (the first random pair tried): the sum 1 + |x − ½|/2 + …
+        // needs more than 53 bits, so the f64 factor rounds; 50 bits keep it exact.
+        let (x, y): (f64, f64) = (
+            f64::from_bits(0x3fe236eb2265b1f5),
+            f64::from_bits(0x3fe9ac27d8f16adf),
+        );
+        let half = q(0.5);
+        let exact = q(1.0) + (q(x) - &half).abs() / q(2.0) + (q(y) - &half).abs() / q(2.0)
+            - (q(x) - q(y)).abs() / q(2.0);
+        assert_ne!(q(pair_f64(Kind::Centered, x, y)), exact);
     }
 }

@@ -111,6 +111,7 @@ mod tests {
     use super::*;
     use gartowen_core::SplitMix64;
     use num_rational::BigRational;
+    use num_traits::Signed;
 
     fn q(x: f64) -> BigRational {
         BigRational::from_float(x).expect("finite")
@@ -197,5 +198,95 @@ mod tests {
         );
         let (p, e) = two_prod(a, b);
         assert_ne!(q(p) + q(e), q(a) * q(b));
+    }
+
+    /// Non-negative normalized double-doubles (hi ≥ 0, |lo| ≤ 2u·hi: the invariant `Inv` of
+    /// `proofs/DdSum.v`), over 2^-400..2^400, with the extremes of lo.
+    fn normalized(n: usize, seed: u64) -> Vec<Dd> {
+        let mut rng = SplitMix64::new(seed);
+        let mut v = vec![Dd::from(0.0), Dd::from(1.0)];
+        while v.len() < n {
+            let mant = 1.0 + (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
+            let hi = mant * 2f64.powi((rng.next_u64() % 801) as i32 - 400);
+            let room = hi * f64::EPSILON; // 2u·hi
+            let lo = match rng.next_u64() % 4 {
+                0 => room,
+                1 => -room,
+                2 => 0.0,
+                _ => room * ((rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0),
+            };
+            v.push(Dd { hi, lo });
+        }
+        v
+    }
+
+    fn value(a: Dd) -> BigRational {
+        q(a.hi) + q(a.lo)
+    }
+
+    fn is_normalized(a: Dd) -> bool {
+        a.hi >= 0.0 && a.lo.abs() <= a.hi * f64::EPSILON
+    }
+
+    /// The second path for `dd_add_correct`: exact rationals on adversarial operands.
+    #[test]
+    fn dd_add_of_nonnegative_pairs_is_within_10_u2_and_normalized() {
+        let u2 = q(f64::EPSILON / 2.0) * q(f64::EPSILON / 2.0);
+        let xs = normalized(300, 4);
+        let mut worst = BigRational::from_integer(0.into());
+        for &a in &xs {
+            for &b in xs.iter().step_by(3) {
+                let s = a.add(b);
+                let exact = value(a) + value(b);
+                let err = (value(s) - &exact).abs();
+                assert!(is_normalized(s), "{a:?} + {b:?} = {s:?}");
+                assert!(err <= q(10.0) * &u2 * &exact, "{a:?} + {b:?}");
+                if exact > BigRational::from_integer(0.into()) {
+                    worst = worst.max(err / (&u2 * exact));
+                }
+            }
+        }
+        // The bound is not vacuous: some sums err by more than u²/4.
+        assert!(worst > q(0.25), "worst error {worst} u²");
+        // The hypothesis hi ≥ 0 matters: with b.hi = −1 the his cancel exactly and the lo sum
+        // rounds a tie (2^-53 − 2^-105 + 2^-107 to even), losing 2^-107 of a 1.5·2^-52 result,
+        // a relative error of 2^-55, far above 10u² = 10·2^-106.
+        let a = Dd {
+            hi: 1.0 + f64::EPSILON,
+            lo: 2f64.powi(-53) - 2f64.powi(-105),
+        };
+        let b = Dd {
+            hi: -1.0,
+            lo: 2f64.powi(-107),
+        };
+        let exact = value(a) + value(b);
+        let err = (value(a.add(b)) - &exact).abs();
+        assert_eq!(err, q(2f64.powi(-107)));
+        assert!(err > q(10.0) * &u2 * exact.abs());
+    }
+
+    /// The second path for `dd_mul_bound`: within 20u² when hi·hi is 0 or ≥ 2^-900.
+    #[test]
+    fn dd_mul_of_nonnegative_pairs_is_within_20_u2_and_normalized() {
+        let u2 = q(f64::EPSILON / 2.0) * q(f64::EPSILON / 2.0);
+        let xs = normalized(200, 5);
+        let mut checked = 0;
+        for &a in &xs {
+            for &b in xs.iter().step_by(3) {
+                let p = a.hi * b.hi;
+                if !(p == 0.0 || p >= 2f64.powi(-900)) {
+                    continue;
+                }
+                let m = a.mul(b);
+                let exact = value(a) * value(b);
+                assert!(is_normalized(m), "{a:?} · {b:?} = {m:?}");
+                assert!(
+                    (value(m) - &exact).abs() <= q(20.0) * &u2 * &exact,
+                    "{a:?} · {b:?}"
+                );
+                checked += 1;
+            }
+        }
+        assert!(checked > 10_000, "{checked}");
     }
 }

@@ -13,6 +13,7 @@
 //!   computed in exact integers and combined into an exact rational, with a correctly rounded f64.
 //! * `fast`: 2-D L2-star in O(N log N) (sort by x, Fenwick tree over y ranks), in exact integers.
 
+mod bound;
 pub mod choice;
 pub mod compensated;
 pub mod curves;
