@@ -346,7 +346,9 @@ def discrepancy(
         points: float64 values in [0, 1) or uint32/uint64 words, shape (n, dims) or (n,).
         kind: ``"l2star"``, ``"cd"``, ``"wd"`` or ``"gl2"``.
         method: ``"auto"``, ``"naive"``, ``"compensated"``, ``"exact"`` or ``"fast"`` (2-D
-            L2-star only).
+            L2-star only). ``"compensated"`` reports the error bound proved in the project's
+            Coq theory ``proofs/DdSum.v``; where its hypotheses (coordinates of at most 50
+            bits, no overflow or underflow) fail, it computes exactly instead.
         root: report D instead of D^2.
         pairs: also report 2-D values of pairs of dimensions: ``"first"`` (0 with each other)
             or ``"all"``.

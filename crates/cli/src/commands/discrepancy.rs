@@ -18,7 +18,8 @@ pub enum MethodArg {
     Auto,
     /// Plain f64 (what most tools do; shown for comparison).
     Naive,
-    /// Double-double compensated sums (deterministic for any thread count).
+    /// Double-double compensated sums (deterministic for any thread count) with the error bound
+    /// proved in proofs/DdSum.v; exact where the bound's run-time hypotheses fail.
     Compensated,
     /// Exact rational.
     Exact,
