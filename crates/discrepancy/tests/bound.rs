@@ -76,3 +76,52 @@ fn gl2_sums_near_overflow_void_the_bound() {
         assert!(rel(chosen.value, &truth) <= BigRational::from_float(b).unwrap());
     }
 }
+
+#[test]
+fn the_hypothesis_limits_are_exact_at_their_edges() {
+    // Overflow: two points in d dimensions of GL2 count 2·2 + d + 4 bits; 1000 is allowed.
+    for (d, bounded) in [(992, true), (993, false)] {
+        let words: Vec<u64> = (0..2 * d).map(|i| ((i as u64 * 31) % 1024) << 22).collect();
+        let p = Points {
+            words: &words,
+            dims: d,
+            width: Width::W32,
+        };
+        assert_eq!(
+            compensated(p, Kind::GeneralizedL2)
+                .rel_error_bound
+                .is_some(),
+            bounded,
+            "d = {d}"
+        );
+    }
+    // Underflow: every coordinate 1 − 2^-40 (64-bit words), so each L2-star factor is at least
+    // 2^-40 and d factors 2^-40d; 880 bits are allowed: d = 22 is the last bounded dimension.
+    for (d, bounded) in [(22, true), (23, false)] {
+        let words = vec![u64::MAX - (1 << 24) + 1; 2 * d];
+        let p = Points {
+            words: &words,
+            dims: d,
+            width: Width::W64,
+        };
+        let c = compensated(p, Kind::L2Star);
+        assert_eq!(c.rel_error_bound.is_some(), bounded, "d = {d}");
+        if let Some(b) = c.rel_error_bound {
+            let truth = exact_rational(p, Kind::L2Star);
+            assert!(rel(c.value, &truth) <= BigRational::from_float(b).unwrap());
+        }
+        // The same at 32 bits: 1 − 2^-8 in every coordinate, 110 factors of 2^-8 = 880 bits.
+        let d32 = d * 5;
+        let words = vec![u32::MAX as u64 - (1 << 24) + 1; 2 * d32];
+        let p = Points {
+            words: &words,
+            dims: d32,
+            width: Width::W32,
+        };
+        assert_eq!(
+            compensated(p, Kind::L2Star).rel_error_bound.is_some(),
+            bounded,
+            "d = {d32}"
+        );
+    }
+}
