@@ -16,112 +16,57 @@ fn rel(value: f64, truth: &BigRational) -> BigRational {
     ((BigRational::from_float(value).unwrap() - truth) / truth).abs()
 }
 
-/// Two points whose coordinates are all 1 − 2^-50 and ½ (64-bit words, 50 significant bits):
-/// L2-star's factors reach 2^-50, so d factors reach 2^-50d.
-fn near_one(d: usize) -> Vec<u64> {
-    let mut w = vec![((1u64 << 50) - 1) << 14; d];
-    w.extend(vec![1u64 << 63; d]);
-    w
+/// Asserts that compensated claims a bound exactly when `bounded`, that the method choice
+/// `compensated` then keeps it and otherwise falls back to exact, and that the bound returned
+/// either way holds against the exact rational.
+fn assert_case(words: &[u64], dims: usize, width: Width, kind: Kind, bounded: bool) {
+    let p = Points { words, dims, width };
+    let c = compensated(p, kind);
+    assert_eq!(c.rel_error_bound.is_some(), bounded, "{kind:?}, d = {dims}");
+    let chosen = compute(p, kind, MethodChoice::Compensated).unwrap();
+    let expected = if bounded {
+        Method::Compensated
+    } else {
+        Method::Exact
+    };
+    assert_eq!(chosen.method, expected, "{kind:?}, d = {dims}");
+    let truth = exact_rational(p, kind);
+    let b = chosen.rel_error_bound.expect("a bound either way");
+    assert!(rel(chosen.value, &truth) <= BigRational::from_float(b).unwrap());
 }
 
 #[test]
 fn l2star_products_near_underflow_void_the_bound_and_compensated_computes_exactly() {
+    // Two points: every coordinate 1 − 2^-50 and ½ (64-bit words, 50 significant bits), so
+    // L2-star's factors reach 2^-50 and d of them 2^-50d; 880 bits are allowed.
     for (d, bounded) in [(17, true), (18, false)] {
-        let words = near_one(d);
-        let p = Points {
-            words: &words,
-            dims: d,
-            width: Width::W64,
-        };
-        let c = compensated(p, Kind::L2Star);
-        assert_eq!(
-            c.rel_error_bound.is_some(),
-            bounded,
-            "d = {d}: 50·d bits below 1"
-        );
-        let truth = exact_rational(p, Kind::L2Star);
-        if let Some(b) = c.rel_error_bound {
-            assert!(rel(c.value, &truth) <= BigRational::from_float(b).unwrap());
-        }
-        let chosen = compute(p, Kind::L2Star, MethodChoice::Compensated).unwrap();
-        let expected = if bounded {
-            Method::Compensated
-        } else {
-            Method::Exact
-        };
-        assert_eq!(chosen.method, expected, "d = {d}");
-        let b = chosen.rel_error_bound.expect("a bound either way");
-        assert!(rel(chosen.value, &truth) <= BigRational::from_float(b).unwrap());
+        let mut words = vec![((1u64 << 50) - 1) << 14; d];
+        words.extend(vec![1u64 << 63; d]);
+        assert_case(&words, d, Width::W64, Kind::L2Star, bounded);
     }
 }
 
 #[test]
 fn gl2_sums_near_overflow_void_the_bound() {
-    // GL2's pair factor reaches 2, so two points in d dimensions sum to about 2^(d + 2).
-    for (d, bounded) in [(990, true), (1000, false)] {
+    // GL2's pair factor reaches 2, so two points in d dimensions sum to about 2^(d + 2); the
+    // check counts 2·2 + d + 4 bits and allows 1000, so 992 is the last bounded dimension.
+    for (d, bounded) in [(990, true), (992, true), (993, false), (1000, false)] {
         let words: Vec<u64> = (0..2 * d)
             .map(|i| ((i as u64 * 7919) % 1024) << 22)
             .collect();
-        let p = Points {
-            words: &words,
-            dims: d,
-            width: Width::W32,
-        };
-        let c = compensated(p, Kind::GeneralizedL2);
-        assert_eq!(c.rel_error_bound.is_some(), bounded, "d = {d}");
-        let chosen = compute(p, Kind::GeneralizedL2, MethodChoice::Compensated).unwrap();
-        assert_eq!(chosen.method == Method::Exact, !bounded);
-        let truth = exact_rational(p, Kind::GeneralizedL2);
-        let b = chosen.rel_error_bound.expect("a bound either way");
-        assert!(rel(chosen.value, &truth) <= BigRational::from_float(b).unwrap());
+        assert_case(&words, d, Width::W32, Kind::GeneralizedL2, bounded);
     }
 }
 
 #[test]
-fn the_hypothesis_limits_are_exact_at_their_edges() {
-    // Overflow: two points in d dimensions of GL2 count 2·2 + d + 4 bits; 1000 is allowed.
-    for (d, bounded) in [(992, true), (993, false)] {
-        let words: Vec<u64> = (0..2 * d).map(|i| ((i as u64 * 31) % 1024) << 22).collect();
-        let p = Points {
-            words: &words,
-            dims: d,
-            width: Width::W32,
-        };
-        assert_eq!(
-            compensated(p, Kind::GeneralizedL2)
-                .rel_error_bound
-                .is_some(),
-            bounded,
-            "d = {d}"
-        );
-    }
-    // Underflow: every coordinate 1 − 2^-40 (64-bit words), so each L2-star factor is at least
-    // 2^-40 and d factors 2^-40d; 880 bits are allowed: d = 22 is the last bounded dimension.
+fn the_underflow_limit_is_exact_at_its_edge_at_both_widths() {
+    // Every coordinate 1 − 2^-40 (64-bit words): d factors of 2^-40, d = 22 the last bounded.
+    // At 32 bits, 1 − 2^-8: 110 factors of 2^-8 = 880 bits.
     for (d, bounded) in [(22, true), (23, false)] {
         let words = vec![u64::MAX - (1 << 24) + 1; 2 * d];
-        let p = Points {
-            words: &words,
-            dims: d,
-            width: Width::W64,
-        };
-        let c = compensated(p, Kind::L2Star);
-        assert_eq!(c.rel_error_bound.is_some(), bounded, "d = {d}");
-        if let Some(b) = c.rel_error_bound {
-            let truth = exact_rational(p, Kind::L2Star);
-            assert!(rel(c.value, &truth) <= BigRational::from_float(b).unwrap());
-        }
-        // The same at 32 bits: 1 − 2^-8 in every coordinate, 110 factors of 2^-8 = 880 bits.
+        assert_case(&words, d, Width::W64, Kind::L2Star, bounded);
         let d32 = d * 5;
         let words = vec![u32::MAX as u64 - (1 << 24) + 1; 2 * d32];
-        let p = Points {
-            words: &words,
-            dims: d32,
-            width: Width::W32,
-        };
-        assert_eq!(
-            compensated(p, Kind::L2Star).rel_error_bound.is_some(),
-            bounded,
-            "d = {d32}"
-        );
+        assert_case(&words, d32, Width::W32, Kind::L2Star, bounded);
     }
 }
