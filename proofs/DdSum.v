@@ -57,6 +57,14 @@ Qed.
 Lemma add_err : forall a b, fmt a -> fmt b -> Rabs (rnd (a + b) - (a + b)) <= u * Rabs (a + b).
 Proof. intros a b Fa Fb. rewrite <- u_bpow. apply add_error; assumption. Qed.
 
+(** The same against any upper bound M of the exact sum's magnitude. *)
+Lemma add_err_le : forall a b M, fmt a -> fmt b -> Rabs (a + b) <= M ->
+  Rabs (rnd (a + b) - (a + b)) <= u * M.
+Proof.
+  intros a b M Fa Fb H. eapply Rle_trans; [apply add_err; assumption|].
+  apply Rmult_le_compat_l; [unfold u; lra|exact H].
+Qed.
+
 (** Rounding of any real: relative error u plus an absolute 2^-1075 (subnormals). *)
 Definition eta : R := / 2 * bpow radix2 emin.
 
@@ -147,18 +155,16 @@ Proof.
   apply abs_le in Ha. apply abs_le in Hb.
   set (t1 := rnd (e + al)).
   assert (Ft1 : fmt t1) by apply fmt_rnd.
-  pose proof (add_err e al Fe Fal) as R1. fold t1 in R1.
   assert (A1 : Rabs (e + al) <= u * (ah + bh) + 2 * u * ah) by (apply abs_le; lra).
-  assert (R1' : Rabs (t1 - (e + al)) <= u * (u * (ah + bh) + 2 * u * ah)).
-  { eapply Rle_trans; [exact R1|]. apply Rmult_le_compat_l; [unfold u; lra|exact A1]. }
+  assert (R1' : Rabs (t1 - (e + al)) <= u * (u * (ah + bh) + 2 * u * ah))
+    by (apply add_err_le; assumption).
   apply abs_le in R1'.
   set (t := rnd (t1 + bl)).
-  pose proof (add_err t1 bl Ft1 Fbl) as R2. fold t in R2.
   assert (A2 : Rabs (t1 + bl) <= (1 + u) * (u * (ah + bh) + 2 * u * ah) + 2 * u * bh).
   { apply abs_le. unfold u in *. lra. }
   assert (R2' : Rabs (t - (t1 + bl)) <=
-                u * ((1 + u) * (u * (ah + bh) + 2 * u * ah) + 2 * u * bh)).
-  { eapply Rle_trans; [exact R2|]. apply Rmult_le_compat_l; [unfold u; lra|exact A2]. }
+                u * ((1 + u) * (u * (ah + bh) + 2 * u * ah) + 2 * u * bh))
+    by (apply add_err_le; assumption).
   apply abs_le in R2'.
   assert (Ht : Rabs t <= Rabs s).
   { rewrite (Rabs_pos_eq s) by (unfold u in *; lra). apply abs_le. unfold u in *. lra. }
@@ -223,20 +229,18 @@ Proof.
   apply abs_le in X1. apply abs_le in X2. apply abs_le in X3.
   apply abs_le in R1. apply abs_le in R2.
   set (c := rnd (c1 + c2)).
-  pose proof (add_err c1 c2 (fmt_rnd _) (fmt_rnd _)) as R3. fold c in R3.
   assert (A3 : Rabs (c1 + c2) <= 4 * u * P + 2 * (u * (2 * u * P) + eta))
     by (apply abs_le; lra).
-  assert (R3' : Rabs (c - (c1 + c2)) <= u * (4 * u * P + 2 * (u * (2 * u * P) + eta))).
-  { eapply Rle_trans; [exact R3|]. apply Rmult_le_compat_l; [unfold u; lra|exact A3]. }
+  assert (R3' : Rabs (c - (c1 + c2)) <= u * (4 * u * P + 2 * (u * (2 * u * P) + eta)))
+    by (apply add_err_le; [apply fmt_rnd|apply fmt_rnd|exact A3]).
   apply abs_le in R3'.
   set (t := rnd (e + c)).
-  pose proof (add_err e c Fe (fmt_rnd _)) as R4. fold t in R4.
   assert (A4 : Rabs (e + c) <=
                u * P + (1 + u) * (4 * u * P + 2 * (u * (2 * u * P) + eta))).
   { apply abs_le. unfold u in *. lra. }
   assert (R4' : Rabs (t - (e + c)) <=
-                u * (u * P + (1 + u) * (4 * u * P + 2 * (u * (2 * u * P) + eta)))).
-  { eapply Rle_trans; [exact R4|]. apply Rmult_le_compat_l; [unfold u; lra|exact A4]. }
+                u * (u * P + (1 + u) * (4 * u * P + 2 * (u * (2 * u * P) + eta))))
+    by (apply add_err_le; [exact Fe|apply fmt_rnd|exact A4]).
   apply abs_le in R4'.
   assert (Ht : Rabs t <= Rabs p).
   { rewrite (Rabs_pos_eq p) by (unfold u in *; lra). apply abs_le. unfold u in *. lra. }
