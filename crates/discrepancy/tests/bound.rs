@@ -48,10 +48,18 @@ fn l2star_products_near_underflow_void_the_bound_and_compensated_computes_exactl
 
 #[test]
 fn gl2_sums_near_overflow_void_the_bound() {
-    // GL2's pair factor reaches 2, so two points in d dimensions sum to about 2^(d + 2); the
-    // check counts 2·2 + d + 4 bits and allows 1000, so 992 is the last bounded dimension.
-    for (d, bounded) in [(990, true), (992, true), (993, false), (1000, false)] {
-        let words: Vec<u64> = (0..2 * d)
+    // GL2's pair factor reaches 2, so N points in d dimensions sum to about N²·2^d; the check
+    // counts 2·(bits of N) + d + 4 and allows 1000: with 2 points (2 bits) 992 is the last
+    // bounded dimension, with 16 points (5 bits) 986.
+    for (n, d, bounded) in [
+        (2, 990, true),
+        (2, 992, true),
+        (2, 993, false),
+        (2, 1000, false),
+        (16, 986, true),
+        (16, 987, false),
+    ] {
+        let words: Vec<u64> = (0..n * d)
             .map(|i| ((i as u64 * 7919) % 1024) << 22)
             .collect();
         assert_case(&words, d, Width::W32, Kind::GeneralizedL2, bounded);
