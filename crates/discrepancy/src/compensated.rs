@@ -328,4 +328,22 @@ mod tests {
             - (q(x) - q(y)).abs() / q(2.0);
         assert_ne!(q(pair_f64(Kind::Centered, x, y)), exact);
     }
+
+    /// The proof (`wd_pair_f64_error`) is about the operation sequence 1.25 + c·c with
+    /// c = ||x − y| − ½|, not about WD's textbook 1.5 − t(1 − t), which rounds differently.
+    #[test]
+    fn wd_f64_pair_factor_is_the_proved_operation_sequence() {
+        let xs = coordinates();
+        let mut differs = 0;
+        for &x in &xs {
+            for &y in &xs {
+                let (fx, fy) = (to_f64(x), to_f64(y));
+                let c = ((fx - fy).abs() - 0.5).abs();
+                let proved = 1.25 + c * c;
+                assert_eq!(pair_f64(Kind::WrapAround, fx, fy).to_bits(), proved.to_bits());
+                differs += (Kind::WrapAround.pair(fx, fy) != proved) as usize;
+            }
+        }
+        assert!(differs > 0, "the two forms should round differently somewhere");
+    }
 }
