@@ -340,10 +340,16 @@ mod tests {
                 let (fx, fy) = (to_f64(x), to_f64(y));
                 let c = ((fx - fy).abs() - 0.5).abs();
                 let proved = 1.25 + c * c;
-                assert_eq!(pair_f64(Kind::WrapAround, fx, fy).to_bits(), proved.to_bits());
+                assert_eq!(
+                    pair_f64(Kind::WrapAround, fx, fy).to_bits(),
+                    proved.to_bits()
+                );
                 differs += (Kind::WrapAround.pair(fx, fy) != proved) as usize;
             }
         }
-        assert!(differs > 0, "the two forms should round differently somewhere");
+        assert!(
+            differs > 0,
+            "the two forms should round differently somewhere"
+        );
     }
 }
