@@ -9,9 +9,18 @@
 //! per nonzero part, and inner nodes are few: for k = 5 in 16 dimensions, 4,844 inner nodes
 //! serve 15,504 shapes.
 //!
+//! t = 0 in base 2^q (N = b^k points, one per box) is decided by setting bits only. The
+//! leaves of a node all add the same part v = k − Σd (in different dimensions), so when a
+//! lane of b^v bits fits in a 64-bit word they share one pass: one word per parent box, one
+//! lane per leaf, one read-modify-write per point for 64 / b^v leaves (4 in base 16, where
+//! 11,628 of the 15,504 shapes of k = 5 end in a part of 1). The read-modify-write into a
+//! cache-missing table is the cost of a leaf, so sharing it is what pays; digits of up to 8
+//! bits come from a byte column (the top 8 bits of each prefix), and key arrays of finished
+//! inner nodes are reused by the next, not zeroed afresh.
+//!
 //! Parallel: children of a node are checked by rayon tasks; a worker holds at most one key
 //! array per level of the walk (k − 1 arrays of N keys, 4 bytes each) besides its box
-//! counters. Early exit: the first-failure search skips every subtree whose least shape is
+//! counters and lane words (at most [`MAX_MASK_BYTES`]); the byte columns add s·N bytes. Early exit: the first-failure search skips every subtree whose least shape is
 //! after the best failure found so far, and the any-failure search stops at the first one.
 
 use crate::box_keys::{check_shape, CHUNK};
@@ -33,6 +42,15 @@ pub(crate) struct ShapeWalk<'a> {
     pub(crate) n: usize,
 }
 
+/// A walk with its narrow digit columns: the top 8 bits of every prefix (b = 2^q, q·depth ≥
+/// 8, k ≥ 2), so a part of q·v ≤ 8 bits is read from 1 byte per point instead of 4. Leaves
+/// and inner nodes stream their digit column from memory once per pass, so a pass over a
+/// narrow column moves about half the bytes.
+struct Walk<'a, 'b> {
+    query: &'b ShapeWalk<'a>,
+    narrow: Vec<Vec<u8>>,
+}
+
 /// What a walk has found so far.
 struct Found {
     /// The least failing shape so far (lexicographic) and its box.
@@ -46,6 +64,11 @@ struct Found {
 thread_local! {
     /// Box counters of the worker (reused across shapes).
     static SCRATCH: RefCell<Vec<u32>> = const { RefCell::new(Vec::new()) };
+    /// Lane masks of the worker's packed leaf pass (reused across groups).
+    static MASKS: RefCell<Vec<u64>> = const { RefCell::new(Vec::new()) };
+    /// Inner nodes' key arrays the worker has finished with, reused (no zeroing, no fresh
+    /// pages) by the next inner node: every key is overwritten.
+    static KEY_POOL: RefCell<Vec<Vec<u32>>> = const { RefCell::new(Vec::new()) };
 }
 
 impl ShapeWalk<'_> {
@@ -58,18 +81,46 @@ impl ShapeWalk<'_> {
             first,
         };
         let dims = self.prefix.len();
+        let narrow = match self.base.log2() {
+            Some(q) if q * self.depth >= 8 && self.k >= 2 => {
+                let cut = q * self.depth - 8;
+                self.prefix
+                    .par_iter()
+                    .map(|column| column.iter().map(|&x| (x >> cut) as u8).collect())
+                    .collect()
+            }
+            _ => Vec::new(),
+        };
+        let walk = Walk {
+            query: self,
+            narrow,
+        };
         if self.k == 0 {
             // One shape (all zeros), one box holding every point.
             let shape = vec![0u32; dims];
-            let failure = self.leaf(None, 0, 0, &shape);
+            let failure = walk.leaf(None, 0, 0, &shape);
             progress(1);
             return failure;
         }
         let root = vec![0u32; dims];
-        self.children(&root, 0, 0, None, &found, progress);
+        walk.children(&root, 0, 0, None, &found, progress);
         found.best.into_inner().expect("no worker panicked")
     }
+}
 
+/// The largest lane-mask array (bytes) a packed leaf pass may use per worker: a leaf group
+/// needs one 64-bit word per parent box, which is more than a bitmap's b^k bits when lanes
+/// are narrow (base 2), so deep binary levels keep the one-bitmap-per-leaf pass.
+const MAX_MASK_BYTES: usize = 4 << 20;
+
+/// One task of a node's children: an inner child (dimension, part), or a group of leaves
+/// (dimensions) that share the node's keys and the part that completes Σd = k.
+enum Step {
+    Inner(usize, u32),
+    Leaves(Vec<usize>),
+}
+
+impl Walk<'_, '_> {
     /// Checks the subtree below the partial shape `shape` (Σd = `sum`, next part at a
     /// dimension ≥ `next`), whose keys are `keys` (None for the empty shape).
     fn children(
@@ -81,35 +132,196 @@ impl ShapeWalk<'_> {
         found: &Found,
         progress: Progress,
     ) {
+        let q = self.query;
         let dims = shape.len();
-        let options: Vec<(usize, u32)> = (next..dims)
-            .flat_map(|p| (1..=self.k - sum).map(move |v| (p, v)))
+        let last = q.k - sum;
+        let group = self.lanes(sum, last).unwrap_or(1);
+        let leaves: Vec<usize> = (next..dims).collect();
+        let steps: Vec<Step> = leaves
+            .chunks(group)
+            .map(|g| Step::Leaves(g.to_vec()))
+            .chain((next..dims).flat_map(|p| (1..last).map(move |v| Step::Inner(p, v))))
             .collect();
-        options.into_par_iter().for_each(|(p, v)| {
+        steps.into_par_iter().for_each(|step| {
             if found.stop.load(Ordering::Relaxed) {
                 return;
             }
-            let mut child = shape.to_vec();
-            child[p] = v;
-            if sum + v == self.k {
-                if self.skip(&child, found) {
-                    return;
+            match step {
+                Step::Leaves(ps) => {
+                    let with = |p: usize| {
+                        let mut child = shape.to_vec();
+                        child[p] = last;
+                        child
+                    };
+                    let live: Vec<usize> = ps
+                        .into_iter()
+                        .filter(|&p| !q.skip(&with(p), found))
+                        .collect();
+                    let distinct = match (self.lanes(sum, last), live.as_slice()) {
+                        (_, []) => Vec::new(),
+                        (Some(_), _) => self.distinct_packed(keys, &live, last),
+                        (None, &[p]) if self.bit_pass() => vec![self.distinct_keys(keys, p, last)],
+                        _ => vec![false; live.len()],
+                    };
+                    for (&p, distinct) in live.iter().zip(distinct) {
+                        if !distinct {
+                            // No fused pass, or a collision: the general check finds and
+                            // describes the first failing box.
+                            if let Some(f) = self.leaf(keys, p, last, &with(p)) {
+                                q.record(f, found);
+                            }
+                        }
+                        progress(1);
+                    }
                 }
-                let failure = self.leaf(keys, p, v, &child);
-                progress(1);
-                if let Some(f) = failure {
-                    self.record(f, found);
+                Step::Inner(p, v) => {
+                    let mut child = shape.to_vec();
+                    child[p] = v;
+                    if q.skip(&least_completion(&child, q.k), found) {
+                        return;
+                    }
+                    let extended = self.extend_all(keys, p, v);
+                    self.children(&child, p + 1, sum + v, Some(&extended), found, progress);
+                    KEY_POOL.with(|pool| pool.borrow_mut().push(extended));
                 }
-            } else {
-                if self.skip(&least_completion(&child, self.k), found) {
-                    return;
-                }
-                let extended = self.extend_all(keys, p, v);
-                self.children(&child, p + 1, sum + v, Some(&extended), found, progress);
             }
         });
     }
 
+    /// Whether leaves are checked by a pass that only sets bits: t = 0 (one point per box) in
+    /// base 2^q, where N = b^k points must fill the b^k boxes of every shape.
+    fn bit_pass(&self) -> bool {
+        self.query.t_count == 1 && self.query.base.log2().is_some()
+    }
+
+    /// Leaves per packed pass below a node with Σd = `sum` whose leaves add part `v`: each
+    /// parent box gets one 64-bit word holding a b^v-bit lane per leaf (bit d for v-digit
+    /// value d), so 64 / b^v leaves share one read-modify-write per point. None when the bit
+    /// pass does not apply, a lane would not fit in a word, or the words would exceed
+    /// [`MAX_MASK_BYTES`]. (Wider lanes sharing a cache line were measured no faster than
+    /// one bitmap per leaf: the cost is the read-modify-write, not the line.)
+    fn lanes(&self, sum: u32, v: u32) -> Option<usize> {
+        let q = self.query;
+        let lane = q.base.pow(v).filter(|&w| w <= 64)? as usize;
+        let words = q.base.pow(sum).expect("validated") as usize;
+        (self.bit_pass() && words.checked_mul(8)? <= MAX_MASK_BYTES).then_some(64 / lane)
+    }
+
+    /// Keys of the parent extended by part `v` in dimension `p`, for points start..+len
+    /// (the empty shape's keys are 0). Always inlined, so the t = 0 pass builds its keys with
+    /// the vector width it was compiled for.
+    #[inline(always)]
+    fn extend(&self, parent: Option<&[u32]>, p: usize, v: u32, start: usize, out: &mut [u32]) {
+        let q = self.query;
+        match q.base.log2() {
+            Some(log) => extend_pow2(parent, &self.column(p, v), log * v, start, out),
+            None => {
+                let end = start + out.len();
+                let parent = parent.map(|parent| &parent[start..end]);
+                let cut = q.base.pow(q.depth - v).expect("validated") as u32;
+                let place = q.base.pow(v).expect("validated") as u32;
+                let digits = &q.prefix[p][start..end];
+                extend_with(parent, digits, out, |a, x| a * place + x / cut);
+            }
+        }
+    }
+
+    /// Whether the keys of all points (parent keys extended by part `v` in dimension `p`)
+    /// are distinct: the t = 0 check in base 2^q, one bit per box. N keys below N = b^k are
+    /// distinct exactly when N bits end up set, so the pass only sets bits (no test per point)
+    /// and a popcount decides. Says only yes or no; a `false` is described by the general
+    /// check.
+    fn distinct_keys(&self, parent: Option<&[u32]>, p: usize, v: u32) -> bool {
+        let q = self.query;
+        let cells = q.base.pow(q.k).expect("validated") as usize;
+        SCRATCH.with(|scratch| {
+            let mut bits = scratch.borrow_mut();
+            bits.clear();
+            bits.resize(cells.div_ceil(32), 0);
+            let log = q.base.log2().expect("the bit pass is for b = 2^q");
+            set_key_bits(q.n, &mut bits, parent, &self.column(p, v), log * v);
+            bits.iter().map(|w| w.count_ones() as u64).sum::<u64>() == q.n as u64
+        })
+    }
+
+    /// [`Self::distinct_keys`] for a group of leaves sharing the parent keys (b^Σd parent
+    /// boxes) and part `v`, in one pass: lane l of the word of parent box K gets bit d for
+    /// each point of that box whose dimension `dims[l]` has v-digit value d. A leaf's keys
+    /// (K, d) are distinct exactly when its lane is full in every word, since its N = b^Σd ·
+    /// b^v points must then hit all b^Σd · b^v pairs once.
+    fn distinct_packed(&self, parent: Option<&[u32]>, dims: &[usize], v: u32) -> Vec<bool> {
+        let q = self.query;
+        let log = q.base.log2().expect("packed for b = 2^q");
+        let (boxes, lane) = (q.n >> (log * v), 1u32 << (log * v));
+        MASKS.with(|masks| {
+            let mut masks = masks.borrow_mut();
+            masks.clear();
+            masks.resize(boxes, 0);
+            let columns: Vec<DigitColumn> = dims.iter().map(|&p| self.column(p, v)).collect();
+            set_lane_bits(q.n, &mut masks, parent, &columns, lane);
+            let full = if lane == 64 {
+                u64::MAX
+            } else {
+                (1u64 << lane) - 1
+            };
+            (0..dims.len())
+                .map(|l| {
+                    let shift = l as u32 * lane;
+                    masks.iter().all(|&w| (w >> shift) & full == full)
+                })
+                .collect()
+        })
+    }
+
+    /// Where the v-digit values of dimension `p` are read (base 2^q): the narrow column when
+    /// q·v ≤ 8 bits fit in it, else the prefixes.
+    fn column(&self, p: usize, v: u32) -> DigitColumn<'_> {
+        let q = self.query;
+        let log = q.base.log2().expect("a power-of-two base");
+        if log * v <= 8 && !self.narrow.is_empty() {
+            DigitColumn::Narrow(&self.narrow[p], 8 - log * v)
+        } else {
+            DigitColumn::Wide(q.prefix[p], log * (q.depth - v))
+        }
+    }
+
+    /// The keys of an inner node, for every point.
+    fn extend_all(&self, parent: Option<&[u32]>, p: usize, v: u32) -> Vec<u32> {
+        let n = self.query.n;
+        let mut out = KEY_POOL
+            .with(|pool| pool.borrow_mut().pop())
+            .filter(|keys| keys.len() == n)
+            .unwrap_or_else(|| vec![0u32; n]);
+        match self.query.base.log2() {
+            Some(log) => extend_all_pow2(parent, &self.column(p, v), log * v, &mut out),
+            None => {
+                for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
+                    self.extend(parent, p, v, c * CHUNK, chunk);
+                }
+            }
+        }
+        out
+    }
+
+    /// The general box check of a leaf: the parent's keys extended chunk by chunk into the
+    /// counters.
+    fn leaf(&self, parent: Option<&[u32]>, p: usize, v: u32, shape: &[u32]) -> Option<BoxFailure> {
+        let q = self.query;
+        SCRATCH.with(|scratch| {
+            let mut scratch = scratch.borrow_mut();
+            let fill = |start: usize, keys: &mut [u32]| {
+                if v == 0 {
+                    keys.fill(0);
+                } else {
+                    self.extend(parent, p, v, start, keys);
+                }
+            };
+            check_shape(fill, 0, q.n, q.base, q.k, q.t_count, shape, &mut scratch)
+        })
+    }
+}
+
+impl ShapeWalk<'_> {
     /// Whether a shape (or a subtree whose least shape it is) can be skipped.
     fn skip(&self, shape: &[u32], found: &Found) -> bool {
         if found.stop.load(Ordering::Relaxed) {
@@ -133,83 +345,6 @@ impl ShapeWalk<'_> {
             found.stop.store(true, Ordering::Relaxed);
         }
     }
-
-    /// Keys of the parent extended by part `v` in dimension `p`, for points start..+len
-    /// (the empty shape's keys are 0). Always inlined, so the t = 0 pass builds its keys with
-    /// the vector width it was compiled for.
-    #[inline(always)]
-    fn extend(&self, parent: Option<&[u32]>, p: usize, v: u32, start: usize, out: &mut [u32]) {
-        let digits = &self.prefix[p][start..start + out.len()];
-        let parent = parent.map(|parent| &parent[start..start + out.len()]);
-        match self.base.log2() {
-            Some(q) => {
-                let (cut, shift) = (q * (self.depth - v), q * v);
-                extend_with(parent, digits, out, |a, x| (a << shift) | (x >> cut));
-            }
-            None => {
-                let cut = self.base.pow(self.depth - v).expect("validated") as u32;
-                let place = self.base.pow(v).expect("validated") as u32;
-                extend_with(parent, digits, out, |a, x| a * place + x / cut);
-            }
-        }
-    }
-
-    /// Whether the keys (parent << shift) | (prefix_p >> cut) of all points are distinct: the
-    /// t = 0 check in base 2^q, one bit per box. N keys below N = b^k are distinct exactly
-    /// when N bits end up set, so the pass only sets bits (no test per point) and a popcount
-    /// decides. Keys are built a chunk at a time (vectorized) and the bit loop is compiled
-    /// with BMI2 where the CPU has it. Says only yes or no; a `false` is described by the
-    /// general check.
-    fn distinct_keys(&self, parent: &[u32], p: usize, v: u32, bits: &mut Vec<u32>) -> bool {
-        let cells = self.base.pow(self.k).expect("validated") as usize;
-        bits.clear();
-        bits.resize(cells.div_ceil(32), 0);
-        set_key_bits(self.n, bits, |start, keys| {
-            self.extend(Some(parent), p, v, start, keys)
-        });
-        bits.iter().map(|w| w.count_ones() as u64).sum::<u64>() == self.n as u64
-    }
-
-    /// The keys of an inner node, for every point.
-    fn extend_all(&self, parent: Option<&[u32]>, p: usize, v: u32) -> Vec<u32> {
-        let mut out = vec![0u32; self.n];
-        for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
-            self.extend(parent, p, v, c * CHUNK, chunk);
-        }
-        out
-    }
-
-    /// The box check of a leaf: the parent's keys extended chunk by chunk into the counters.
-    fn leaf(&self, parent: Option<&[u32]>, p: usize, v: u32, shape: &[u32]) -> Option<BoxFailure> {
-        SCRATCH.with(|scratch| {
-            let mut scratch = scratch.borrow_mut();
-            if let (1, true, Some(parent), true) =
-                (self.t_count, self.base.log2().is_some(), parent, v > 0)
-            {
-                if self.distinct_keys(parent, p, v, &mut scratch) {
-                    return None;
-                }
-                // A collision: the general check below finds and describes the first one.
-            }
-            let fill = |start: usize, keys: &mut [u32]| {
-                if v == 0 {
-                    keys.fill(0);
-                } else {
-                    self.extend(parent, p, v, start, keys);
-                }
-            };
-            check_shape(
-                fill,
-                0,
-                self.n,
-                self.base,
-                self.k,
-                self.t_count,
-                shape,
-                &mut scratch,
-            )
-        })
-    }
 }
 
 /// The lexicographically least shape with Σd = k that extends the partial shape `partial`
@@ -227,11 +362,11 @@ fn least_completion(partial: &[u32], k: u32) -> Vec<u32> {
 /// `out[i] = f(parent[i], digits[i])`, with parent keys 0 for the empty shape: one branch-free
 /// loop per case, so the compiler vectorizes each.
 #[inline(always)]
-fn extend_with(
+fn extend_with<D: Copy>(
     parent: Option<&[u32]>,
-    digits: &[u32],
+    digits: &[D],
     out: &mut [u32],
-    f: impl Fn(u32, u32) -> u32,
+    f: impl Fn(u32, D) -> u32,
 ) {
     match parent {
         Some(parent) => {
@@ -247,29 +382,171 @@ fn extend_with(
     }
 }
 
-/// Sets the bit of every key of points 0..n in `bits`, the keys written a chunk at a time by
-/// `fill(start, keys)`; compiled once more with AVX2 and BMI2, taken when the CPU has them.
-fn set_key_bits(n: usize, bits: &mut [u32], fill: impl Fn(usize, &mut [u32])) {
+/// Keys (parent << shift) | digit of points start..start + out.len() in base 2^q, the digit
+/// (of `shift` bits) read from `column` (parent keys 0 for the empty shape). Always inlined,
+/// so each kernel builds its keys with the vector width it was compiled for.
+#[inline(always)]
+fn extend_pow2(
+    parent: Option<&[u32]>,
+    column: &DigitColumn,
+    shift: u32,
+    start: usize,
+    out: &mut [u32],
+) {
+    let end = start + out.len();
+    let parent = parent.map(|parent| &parent[start..end]);
+    match *column {
+        DigitColumn::Narrow(digits, cut) => {
+            extend_with(parent, &digits[start..end], out, |a, x| {
+                (a << shift) | (u32::from(x) >> cut)
+            })
+        }
+        DigitColumn::Wide(digits, cut) => extend_with(parent, &digits[start..end], out, |a, x| {
+            (a << shift) | (x >> cut)
+        }),
+    }
+}
+
+/// [`extend_pow2`] over every point into `out`; compiled once more with AVX2, taken when the
+/// CPU has it.
+fn extend_all_pow2(parent: Option<&[u32]>, column: &DigitColumn, shift: u32, out: &mut [u32]) {
+    #[inline(always)]
+    fn portable(parent: Option<&[u32]>, column: &DigitColumn, shift: u32, out: &mut [u32]) {
+        for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
+            extend_pow2(parent, column, shift, c * CHUNK, chunk);
+        }
+    }
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") {
+        #[target_feature(enable = "avx2")]
+        fn wide(parent: Option<&[u32]>, column: &DigitColumn, shift: u32, out: &mut [u32]) {
+            portable(parent, column, shift, out)
+        }
+        // SAFETY: AVX2 was detected on this CPU just above.
+        return unsafe { wide(parent, column, shift, out) };
+    }
+    portable(parent, column, shift, out)
+}
+
+/// Sets the bit of every key (parent << shift) | digit of points 0..n in `bits` (digits from
+/// `column`), the keys built a chunk at a time; compiled once more with AVX2 and BMI2, taken
+/// when the CPU has them.
+fn set_key_bits(
+    n: usize,
+    bits: &mut [u32],
+    parent: Option<&[u32]>,
+    column: &DigitColumn,
+    shift: u32,
+) {
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("bmi2") {
         #[target_feature(enable = "avx2,bmi2")]
-        fn wide(n: usize, bits: &mut [u32], fill: impl Fn(usize, &mut [u32])) {
-            set_key_bits_portable(n, bits, fill)
+        fn wide(
+            n: usize,
+            bits: &mut [u32],
+            parent: Option<&[u32]>,
+            column: &DigitColumn,
+            shift: u32,
+        ) {
+            set_key_bits_portable(n, bits, parent, column, shift)
         }
         // SAFETY: AVX2 and BMI2 were detected on this CPU just above.
-        return unsafe { wide(n, bits, fill) };
+        return unsafe { wide(n, bits, parent, column, shift) };
     }
-    set_key_bits_portable(n, bits, fill)
+    set_key_bits_portable(n, bits, parent, column, shift)
 }
 
 #[inline(always)]
-fn set_key_bits_portable(n: usize, bits: &mut [u32], fill: impl Fn(usize, &mut [u32])) {
+fn set_key_bits_portable(
+    n: usize,
+    bits: &mut [u32],
+    parent: Option<&[u32]>,
+    column: &DigitColumn,
+    shift: u32,
+) {
     let mut keys = [0u32; CHUNK];
     for start in (0..n).step_by(CHUNK) {
         let keys = &mut keys[..CHUNK.min(n - start)];
-        fill(start, keys);
+        extend_pow2(parent, column, shift, start, keys);
         for &key in keys.iter() {
             bits[(key >> 5) as usize] |= 1u32 << (key & 31);
+        }
+    }
+}
+
+/// The v-digit values of one dimension in base 2^q: a column and the shift that cuts its
+/// entries to v digits.
+enum DigitColumn<'a> {
+    /// Top 8 bits of each prefix.
+    Narrow(&'a [u8], u32),
+    /// The prefixes floor(x·b^depth).
+    Wide(&'a [u32], u32),
+}
+
+/// ORs into `masks[parent key of point i]` (keys 0 for the empty shape) the lane bits of
+/// points 0..n: bit `l·lane + d` for lane l, whose dimension's v-digit value is d (from
+/// `columns[l]`). Compiled once more with AVX2 and BMI2 (vector variable shifts), taken when
+/// the CPU has them.
+fn set_lane_bits(
+    n: usize,
+    masks: &mut [u64],
+    parent: Option<&[u32]>,
+    columns: &[DigitColumn],
+    lane: u32,
+) {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("bmi2") {
+        #[target_feature(enable = "avx2,bmi2")]
+        fn wide(
+            n: usize,
+            masks: &mut [u64],
+            parent: Option<&[u32]>,
+            columns: &[DigitColumn],
+            lane: u32,
+        ) {
+            set_lane_bits_portable(n, masks, parent, columns, lane)
+        }
+        // SAFETY: AVX2 and BMI2 were detected on this CPU just above.
+        return unsafe { wide(n, masks, parent, columns, lane) };
+    }
+    set_lane_bits_portable(n, masks, parent, columns, lane)
+}
+
+#[inline(always)]
+fn set_lane_bits_portable(
+    n: usize,
+    masks: &mut [u64],
+    parent: Option<&[u32]>,
+    columns: &[DigitColumn],
+    lane: u32,
+) {
+    let mut lanes = [0u64; CHUNK];
+    for start in (0..n).step_by(CHUNK) {
+        let end = (start + CHUNK).min(n);
+        let lanes = &mut lanes[..end - start];
+        lanes.fill(0);
+        for (l, column) in columns.iter().enumerate() {
+            let offset = u64::from(l as u32 * lane);
+            match *column {
+                DigitColumn::Narrow(digits, cut) => {
+                    for (w, &x) in lanes.iter_mut().zip(&digits[start..end]) {
+                        *w |= 1u64 << (offset + u64::from(x >> cut));
+                    }
+                }
+                DigitColumn::Wide(digits, cut) => {
+                    for (w, &x) in lanes.iter_mut().zip(&digits[start..end]) {
+                        *w |= 1u64 << (offset + u64::from(x >> cut));
+                    }
+                }
+            }
+        }
+        match parent {
+            Some(parent) => {
+                for (&key, &bits) in parent[start..end].iter().zip(lanes.iter()) {
+                    masks[key as usize] |= bits;
+                }
+            }
+            None => masks[0] |= lanes.iter().fold(0, |acc, &bits| acc | bits),
         }
     }
 }
