@@ -351,3 +351,62 @@ fn the_output_format_follows_the_extension_unless_given() {
         .lines()
         .all(|l| l.split_whitespace().all(|w| w.len() == 8)));
 }
+
+/// The .npy writer overlaps computing and writing from two threads on: the bytes are the same
+/// for 1, 2 and 3 threads over several blocks (2^16 rows, blocks of 2^14), values and words;
+/// and a full disk under the pipelined writer exits 2 with a message, not a panic or a hang.
+#[test]
+fn npy_bytes_do_not_depend_on_threads_and_a_full_disk_stops_the_pipeline() {
+    let run = |threads: &str, words: bool| {
+        let mut args = vec![
+            "generate",
+            "--seq",
+            "sobol",
+            "--dims",
+            "3",
+            "--log2-n",
+            "16",
+            "--scramble",
+            "art-owen-2",
+            "--format",
+            "npy",
+        ];
+        if words {
+            args.push("--words");
+        }
+        let o = Command::new(env!("CARGO_BIN_EXE_gartowen"))
+            .args(&args)
+            .env("RAYON_NUM_THREADS", threads)
+            .output()
+            .expect("binary runs");
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        o.stdout
+    };
+    for words in [false, true] {
+        let one = run("1", words);
+        let item = if words { 4 } else { 8 };
+        assert_eq!(one.len(), 128 + (3 << 16) * item, "header and data");
+        assert_eq!(one, run("2", words), "2 threads, words {words}");
+        assert_eq!(one, run("3", words), "3 threads, words {words}");
+    }
+    let full = std::fs::OpenOptions::new()
+        .write(true)
+        .open("/dev/full")
+        .expect("/dev/full exists on Linux");
+    let o = Command::new(env!("CARGO_BIN_EXE_gartowen"))
+        .args([
+            "generate", "--seq", "sobol", "--dims", "4", "--log2-n", "18",
+        ])
+        .args(["--scramble", "lk-hash", "--format", "npy"])
+        .env("RAYON_NUM_THREADS", "2")
+        .stdout(std::process::Stdio::from(full))
+        .output()
+        .expect("binary runs");
+    assert_eq!(
+        o.status.code(),
+        Some(2),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(!String::from_utf8_lossy(&o.stderr).is_empty());
+}

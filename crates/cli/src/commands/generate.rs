@@ -109,7 +109,7 @@ fn plan(a: &GenerateArgs) -> Result<GeneratePlan, CliError> {
 }
 
 /// Fills rows `first..first + buf.len() / dims` of a [`RowSource`] into `buf` (row-major).
-pub type BlockFiller<'a> = Box<dyn Fn(u64, &mut [u64]) + 'a>;
+pub type BlockFiller<'a> = Box<dyn Fn(u64, &mut [u64]) + Sync + 'a>;
 
 /// Rows written per block: a few MB of words, enough for batch scrambling to pay.
 const BLOCK_ROWS: u64 = 1 << 14;
@@ -184,7 +184,10 @@ fn npy_header(descr: &str, rows: u64, dims: usize) -> Vec<u8> {
 
 /// Writes the rows as an (N, d) .npy array of `item`-byte little-endian elements, `encode`
 /// writing one word's bytes. Blocks are encoded in parallel (bytes do not depend on the
-/// thread count) and written whole.
+/// thread count) and written whole. With two or more threads the writing overlaps the
+/// computing: a producer fills and encodes the next block while this thread writes the last
+/// one (at most three blocks of bytes alive), so a slow disk and the scrambling share the
+/// time instead of adding up.
 fn write_npy_as(
     src: &RowSource,
     out: &mut dyn Write,
@@ -195,8 +198,7 @@ fn write_npy_as(
     use rayon::prelude::*;
     out.write_all(&npy_header(descr, src.count, src.dims))
         .map_err(io_err)?;
-    let mut bytes = Vec::new();
-    src.for_each_block(|block| {
+    let encode_block = |block: &[u64], bytes: &mut Vec<u8>| {
         bytes.resize(block.len() * item, 0);
         bytes
             .par_chunks_mut(item * 4096)
@@ -206,7 +208,39 @@ fn write_npy_as(
                     encode(x, b);
                 }
             });
-        out.write_all(&bytes).map_err(io_err)
+    };
+    if rayon::current_num_threads() < 2 {
+        let mut bytes = Vec::new();
+        return src.for_each_block(|block| {
+            encode_block(block, &mut bytes);
+            out.write_all(&bytes).map_err(io_err)
+        });
+    }
+    std::thread::scope(|scope| {
+        let (full_tx, full_rx) = std::sync::mpsc::sync_channel::<Vec<u8>>(1);
+        let (empty_tx, empty_rx) = std::sync::mpsc::channel::<Vec<u8>>();
+        let producer = scope.spawn(move || {
+            src.for_each_block(|block| {
+                let mut bytes = empty_rx.try_recv().unwrap_or_default();
+                encode_block(block, &mut bytes);
+                // A closed channel means the writer stopped on an error it reports itself.
+                full_tx
+                    .send(bytes)
+                    .map_err(|_| CliError::Usage(String::new()))
+            })
+        });
+        let mut written = Ok(());
+        for bytes in full_rx {
+            written = out.write_all(&bytes).map_err(io_err);
+            if written.is_err() {
+                break; // dropping the receiver stops the producer
+            }
+            let _ = empty_tx.send(bytes);
+        }
+        let produced = producer
+            .join()
+            .unwrap_or_else(|panic| std::panic::resume_unwind(panic));
+        written.and(produced)
     })
 }
 
