@@ -4,11 +4,13 @@
 Every figure is the best of --repeat runs (wall clock), so the table is a set of ratios
 measured minutes apart on one machine, not promises. Rows:
 
-  generate 2^20 x 16 Sobol to .npy (a file in a temporary directory and /dev/null), unscrambled
+  dd of the same 128 MiB into a file (the write floor); generate 2^20 x 16 Sobol to .npy (a
+  file in a temporary directory and /dev/null), unscrambled
   and with each scrambler, 1 and 2 threads; check of a 16-D base-16 set of 2^20 points against
   t = 0, 1 and 2 threads, with peak memory; compensated discrepancy, 1 and 2 threads; and, in
   memory through the Python package, gartowen.generate against SciPy's scrambled Sobol
-  (LMS + digital shift, not Owen) of the same size.
+  (LMS + digital shift, not Owen) of the same size, with NumPy filling a fresh array of that
+  size as the floor of both.
 
 Usage: scripts/perf-commands.py [--bin target/release/gartowen] [--repeat 3] [--json out.json]
 The Python rows need `gartowen`, numpy and scipy importable by the running interpreter.
@@ -55,6 +57,10 @@ def python_rows(repeat):
             best = min(best, time.perf_counter() - start)
         return first, best
 
+    import numpy as np
+    # The floor of any call that returns a fresh (2^20, 16) float64 array: allocating it
+    # and writing every element once (page faults included).
+    out["numpy_fresh_array_filled"] = best_of(lambda: np.full((1 << 20, 16), 0.5))
     out["scipy_sobol_scrambled"] = best_of(
         lambda: qmc.Sobol(d=16, scramble=True, seed=1).random_base2(20))
     out["scipy_sobol_unscrambled"] = best_of(
@@ -77,6 +83,16 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         gen = [g, "generate", "--seq", "sobol", "--dims", "16", "--log2-n", "20",
                "--format", "npy", "--seed", "1"]
+        # The floor of writing the 128 MiB .npy: the same bytes copied into a file by dd.
+        sink = os.path.join(tmp, "dd.bin")
+        best = float("inf")
+        for _ in range(args.repeat):
+            start = time.perf_counter()
+            subprocess.run(["dd", "if=/dev/zero", f"of={sink}", "bs=2M", "count=64"],
+                           check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+            best = min(best, time.perf_counter() - start)
+        os.remove(sink)
+        rows["dd 128 MiB to a file (the write floor)"] = best
         for target in ["file", "devnull"]:
             out = os.path.join(tmp, "g.npy") if target == "file" else "/dev/null"
             for s in ["none", "lk-hash", "art-owen-2", "art-owen-16p", "owen-per-bit-hash",
