@@ -398,7 +398,7 @@ fn the_owned_check_reports_exactly_what_the_borrowed_one_does() {
 /// Faure (0,m,s)-nets in bases 2, 4, 8, 16 and 64 with one digit moved: every dimension (so
 /// every lane position of a group) and every digit position (so leaves of every part v and
 /// parents of every depth see the collision). Each moved set fails t = 0, and both paths must
-/// name the same first failing shape and box.
+/// name the same first failing shape and box, at t = 0 and at t = 1.
 #[test]
 fn packed_leaf_lanes_find_every_moved_digit_like_the_per_shape_path() {
     use gartowen_netcheck::counting::check_net_per_shape;
@@ -435,6 +435,11 @@ fn packed_leaf_lanes_find_every_moved_digit_like_the_per_shape_path() {
                     "base {b}: dim {j} digit {r} moved, still a net"
                 );
                 assert_eq!(fast, plain, "base {b} dim {j} digit {r}");
+                // t = 1: boxes of b points, one now holding b + 1 and another b − 1, none
+                // empty. Only the counting check may decide it: a pass that asks whether every
+                // box was hit would call it a net.
+                let fast = check_net(&moved, base, m, 1).unwrap();
+                assert_eq!(fast, check_net_per_shape(&moved, base, m, 1).unwrap());
                 compared += 1;
             }
         }
