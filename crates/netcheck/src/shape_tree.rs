@@ -382,6 +382,34 @@ fn extend_with<D: Copy>(
     }
 }
 
+/// Defines `fn NAME(args)` that runs `PORTABLE(args)` compiled once more with AVX2 and BMI2
+/// (vector variable shifts, BMI2 bit operations), taken when the CPU has them; `PORTABLE` is
+/// `#[inline(always)]` so the whole loop is compiled for the wider target.
+macro_rules! with_avx2 {
+    (
+        $(#[$doc:meta])*
+        fn $name:ident($($arg:ident: $ty:ty),* $(,)?) => $portable:ident
+    ) => {
+        $(#[$doc])*
+        ///
+        /// Compiled once more with AVX2 and BMI2, taken when the CPU has them.
+        fn $name($($arg: $ty),*) {
+            #[cfg(target_arch = "x86_64")]
+            if std::arch::is_x86_feature_detected!("avx2")
+                && std::arch::is_x86_feature_detected!("bmi2")
+            {
+                #[target_feature(enable = "avx2,bmi2")]
+                fn wide($($arg: $ty),*) {
+                    $portable($($arg),*)
+                }
+                // SAFETY: AVX2 and BMI2 were detected on this CPU just above.
+                return unsafe { wide($($arg),*) };
+            }
+            $portable($($arg),*)
+        }
+    };
+}
+
 /// Keys (parent << shift) | digit of points start..start + out.len() in base 2^q, the digit
 /// (of `shift` bits) read from `column` (parent keys 0 for the empty shape). Always inlined,
 /// so each kernel builds its keys with the vector width it was compiled for.
@@ -407,53 +435,34 @@ fn extend_pow2(
     }
 }
 
-/// [`extend_pow2`] over every point into `out`; compiled once more with AVX2, taken when the
-/// CPU has it.
-fn extend_all_pow2(parent: Option<&[u32]>, column: &DigitColumn, shift: u32, out: &mut [u32]) {
-    #[inline(always)]
-    fn portable(parent: Option<&[u32]>, column: &DigitColumn, shift: u32, out: &mut [u32]) {
-        for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
-            extend_pow2(parent, column, shift, c * CHUNK, chunk);
-        }
-    }
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        #[target_feature(enable = "avx2")]
-        fn wide(parent: Option<&[u32]>, column: &DigitColumn, shift: u32, out: &mut [u32]) {
-            portable(parent, column, shift, out)
-        }
-        // SAFETY: AVX2 was detected on this CPU just above.
-        return unsafe { wide(parent, column, shift, out) };
-    }
-    portable(parent, column, shift, out)
+with_avx2! {
+    /// [`extend_pow2`] over every point into `out`.
+    fn extend_all_pow2(parent: Option<&[u32]>, column: &DigitColumn, shift: u32, out: &mut [u32])
+        => extend_all_pow2_portable
 }
 
-/// Sets the bit of every key (parent << shift) | digit of points 0..n in `bits` (digits from
-/// `column`), the keys built a chunk at a time; compiled once more with AVX2 and BMI2, taken
-/// when the CPU has them.
-fn set_key_bits(
-    n: usize,
-    bits: &mut [u32],
+#[inline(always)]
+fn extend_all_pow2_portable(
     parent: Option<&[u32]>,
     column: &DigitColumn,
     shift: u32,
+    out: &mut [u32],
 ) {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("bmi2") {
-        #[target_feature(enable = "avx2,bmi2")]
-        fn wide(
-            n: usize,
-            bits: &mut [u32],
-            parent: Option<&[u32]>,
-            column: &DigitColumn,
-            shift: u32,
-        ) {
-            set_key_bits_portable(n, bits, parent, column, shift)
-        }
-        // SAFETY: AVX2 and BMI2 were detected on this CPU just above.
-        return unsafe { wide(n, bits, parent, column, shift) };
+    for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
+        extend_pow2(parent, column, shift, c * CHUNK, chunk);
     }
-    set_key_bits_portable(n, bits, parent, column, shift)
+}
+
+with_avx2! {
+    /// Sets the bit of every key (parent << shift) | digit of points 0..n in `bits` (digits
+    /// from `column`), the keys built a chunk at a time.
+    fn set_key_bits(
+        n: usize,
+        bits: &mut [u32],
+        parent: Option<&[u32]>,
+        column: &DigitColumn,
+        shift: u32,
+    ) => set_key_bits_portable
 }
 
 #[inline(always)]
@@ -483,33 +492,17 @@ enum DigitColumn<'a> {
     Wide(&'a [u32], u32),
 }
 
-/// ORs into `masks[parent key of point i]` (keys 0 for the empty shape) the lane bits of
-/// points 0..n: bit `l·lane + d` for lane l, whose dimension's v-digit value is d (from
-/// `columns[l]`). Compiled once more with AVX2 and BMI2 (vector variable shifts), taken when
-/// the CPU has them.
-fn set_lane_bits(
-    n: usize,
-    masks: &mut [u64],
-    parent: Option<&[u32]>,
-    columns: &[DigitColumn],
-    lane: u32,
-) {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("bmi2") {
-        #[target_feature(enable = "avx2,bmi2")]
-        fn wide(
-            n: usize,
-            masks: &mut [u64],
-            parent: Option<&[u32]>,
-            columns: &[DigitColumn],
-            lane: u32,
-        ) {
-            set_lane_bits_portable(n, masks, parent, columns, lane)
-        }
-        // SAFETY: AVX2 and BMI2 were detected on this CPU just above.
-        return unsafe { wide(n, masks, parent, columns, lane) };
-    }
-    set_lane_bits_portable(n, masks, parent, columns, lane)
+with_avx2! {
+    /// ORs into `masks[parent key of point i]` (keys 0 for the empty shape) the lane bits of
+    /// points 0..n: bit `l·lane + d` for lane l, whose dimension's v-digit value is d (from
+    /// `columns[l]`).
+    fn set_lane_bits(
+        n: usize,
+        masks: &mut [u64],
+        parent: Option<&[u32]>,
+        columns: &[DigitColumn],
+        lane: u32,
+    ) => set_lane_bits_portable
 }
 
 #[inline(always)]
