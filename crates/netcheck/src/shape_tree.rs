@@ -28,7 +28,7 @@ use crate::counting::Progress;
 use crate::{BoxFailure, CheckBase};
 use rayon::prelude::*;
 use std::cell::RefCell;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::Mutex;
 
 /// One level's query: prefixes floor(x·b^depth) per dimension, shapes with Σd = k, boxes of
@@ -59,6 +59,8 @@ struct Found {
     stop: AtomicBool,
     /// Whether the least failing shape is wanted (else any).
     first: bool,
+    /// Leaves decided by the general count (no bit pass applies, or one said no).
+    general: AtomicU64,
 }
 
 thread_local! {
@@ -75,10 +77,17 @@ impl ShapeWalk<'_> {
     /// Checks every shape; returns the lexicographically least failing shape's first box when
     /// `first`, or some failing shape's otherwise. `progress(1)` per shape checked.
     pub(crate) fn run(&self, first: bool, progress: Progress) -> Option<BoxFailure> {
+        self.run_counted(first, progress).0
+    }
+
+    /// [`Self::run`], and how many leaves the general count decided: none on a t = 0 net in
+    /// base 2^q, where the bit passes decide every shape (tested).
+    fn run_counted(&self, first: bool, progress: Progress) -> (Option<BoxFailure>, u64) {
         let found = Found {
             best: Mutex::new(None),
             stop: AtomicBool::new(false),
             first,
+            general: AtomicU64::new(0),
         };
         let dims = self.prefix.len();
         let narrow = match self.base.log2() {
@@ -100,11 +109,15 @@ impl ShapeWalk<'_> {
             let shape = vec![0u32; dims];
             let failure = walk.leaf(None, 0, 0, &shape);
             progress(1);
-            return failure;
+            return (failure, 1);
         }
         let root = vec![0u32; dims];
         walk.children(&root, 0, 0, None, &found, progress);
-        found.best.into_inner().expect("no worker panicked")
+        let general = found.general.into_inner();
+        (
+            found.best.into_inner().expect("no worker panicked"),
+            general,
+        )
     }
 }
 
@@ -165,8 +178,9 @@ impl Walk<'_, '_> {
                     };
                     for (&p, distinct) in live.iter().zip(distinct) {
                         if !distinct {
-                            // No fused pass, or a collision: the general check finds and
+                            // No bit pass, or a collision: the general check finds and
                             // describes the first failing box.
+                            found.general.fetch_add(1, Ordering::Relaxed);
                             if let Some(f) = self.leaf(keys, p, last, &with(p)) {
                                 q.record(f, found);
                             }
@@ -650,6 +664,52 @@ mod tests {
             mixed_groups > 10,
             "{mixed_groups} groups with full and broken lanes"
         );
+    }
+
+    #[test]
+    fn the_bit_passes_decide_every_shape_of_a_net_and_defer_the_rest() {
+        // On a t = 0 net in base 2^q no leaf reaches the general count (packed lanes for parts
+        // of ≤ 64-bit lanes, one bitmap for the rest); at t = 1 every leaf does; a broken set
+        // sends its failing leaves there.
+        for (q, m, dims) in [(1u32, 8u32, 2usize), (2, 4, 4), (4, 3, 6), (6, 2, 5)] {
+            let b = 1u64 << q;
+            let seq = faure(PowerOfTwoBase::from_q(q).unwrap(), dims, Width::W32).unwrap();
+            let n = b.pow(m) as usize;
+            let mut set: Vec<Vec<u32>> = (0..dims)
+                .map(|j| {
+                    (0..n)
+                        .map(|i| (seq.point(i as u64, j) >> (32 - q * m)) as u32)
+                        .collect()
+                })
+                .collect();
+            let shapes = |k: u32| crate::shapes::shapes(k, dims).unwrap().len() as u64;
+            for broken in [false, true] {
+                if broken {
+                    set[dims - 1].swap(1, n / 2 + 3);
+                }
+                let prefix: Vec<&[u32]> = set.iter().map(|c| c.as_slice()).collect();
+                let t0 = walk_of(&prefix, b, m);
+                let (failure, general) = t0.run_counted(true, &|_| {});
+                assert_eq!(failure.is_some(), broken, "base {b}");
+                if broken {
+                    assert!((1..shapes(m)).contains(&general), "base {b}: {general}");
+                } else {
+                    assert_eq!(general, 0, "base {b}: leaves left to the general count");
+                }
+                let t1 = ShapeWalk {
+                    k: m - 1,
+                    t_count: b,
+                    ..walk_of(&prefix, b, m)
+                };
+                let (failure, general) = t1.run_counted(true, &|_| {});
+                if failure.is_none() {
+                    assert_eq!(general, shapes(m - 1), "base {b} t = 1");
+                } else {
+                    // Shapes after the least failing one are skipped.
+                    assert!((1..=shapes(m - 1)).contains(&general), "base {b} t = 1");
+                }
+            }
+        }
     }
 
     #[test]
