@@ -671,7 +671,16 @@ mod tests {
         // On a t = 0 net in base 2^q no leaf reaches the general count (packed lanes for parts
         // of ≤ 64-bit lanes, one bitmap for the rest); at t = 1 every leaf does; a broken set
         // sends its failing leaves there.
-        for (q, m, dims) in [(1u32, 8u32, 2usize), (2, 4, 4), (4, 3, 6), (6, 2, 5)] {
+        // (Bases 4 with m = 2 and 64 with m = 1 pack the root's leaves too: b^m ≤ 64.)
+        let cases = [
+            (1u32, 8u32, 2usize),
+            (2, 4, 4),
+            (2, 2, 4),
+            (4, 3, 6),
+            (6, 2, 5),
+            (6, 1, 5),
+        ];
+        for (q, m, dims) in cases {
             let b = 1u64 << q;
             let seq = faure(PowerOfTwoBase::from_q(q).unwrap(), dims, Width::W32).unwrap();
             let n = b.pow(m) as usize;
@@ -685,7 +694,7 @@ mod tests {
             let shapes = |k: u32| crate::shapes::shapes(k, dims).unwrap().len() as u64;
             for broken in [false, true] {
                 if broken {
-                    set[dims - 1].swap(1, n / 2 + 3);
+                    set[dims - 1][1] = set[dims - 1][n / 2 + 3];
                 }
                 let prefix: Vec<&[u32]> = set.iter().map(|c| c.as_slice()).collect();
                 let t0 = walk_of(&prefix, b, m);

@@ -446,3 +446,26 @@ fn packed_leaf_lanes_find_every_moved_digit_like_the_per_shape_path() {
     }
     assert_eq!(compared, 2 * 8 + 4 * 4 + 5 * 3 + 6 * 3 + 5 * 2);
 }
+
+/// Bases that are not powers of two build inner nodes' keys by multiplication and division,
+/// chunk by chunk: with more points than one chunk (3^8 = 6561 > 2048) the Hammersley
+/// (0,8,2)-net in base 3 holds, and with one coordinate moved both paths name the same
+/// failure at t = 0 and t = 1.
+#[test]
+fn base_3_sets_larger_than_a_chunk_match_the_per_shape_path() {
+    use gartowen_netcheck::counting::check_net_per_shape;
+    let base = CheckBase::new(3).unwrap();
+    let net = hammersley(3, 8);
+    assert!(check_net(&net, base, 8, 0).unwrap().holds);
+    let mut moved = net.clone();
+    moved.set(5000, 1, net.column(1)[100]);
+    for t in [0, 1] {
+        let fast = check_net(&moved, base, 8, t).unwrap();
+        assert!(!fast.holds, "t = {t}");
+        assert_eq!(
+            fast,
+            check_net_per_shape(&moved, base, 8, t).unwrap(),
+            "t = {t}"
+        );
+    }
+}
