@@ -20,8 +20,9 @@
 //!
 //! Parallel: children of a node are checked by rayon tasks; a worker holds at most one key
 //! array per level of the walk (k − 1 arrays of N keys, 4 bytes each) besides its box
-//! counters and lane words (at most [`MAX_MASK_BYTES`]); the byte columns add s·N bytes. Early exit: the first-failure search skips every subtree whose least shape is
-//! after the best failure found so far, and the any-failure search stops at the first one.
+//! counters and lane words (at most [`MAX_MASK_BYTES`]); the byte columns add s·N bytes.
+//! Early exit: the first-failure search skips every subtree whose least shape is after the
+//! best failure found so far, and the any-failure search stops at the first one.
 
 use crate::box_keys::{check_shape, CHUNK};
 use crate::counting::Progress;
@@ -148,7 +149,8 @@ impl Walk<'_, '_> {
         let q = self.query;
         let dims = shape.len();
         let last = q.k - sum;
-        let group = self.lanes(sum, last).unwrap_or(1);
+        let lanes = self.lanes(sum, last);
+        let group = lanes.unwrap_or(1);
         let leaves: Vec<usize> = (next..dims).collect();
         let steps: Vec<Step> = leaves
             .chunks(group)
@@ -161,27 +163,27 @@ impl Walk<'_, '_> {
             }
             match step {
                 Step::Leaves(ps) => {
-                    let with = |p: usize| {
-                        let mut child = shape.to_vec();
-                        child[p] = last;
-                        child
-                    };
-                    let live: Vec<usize> = ps
+                    let (live, shapes): (Vec<usize>, Vec<Vec<u32>>) = ps
                         .into_iter()
-                        .filter(|&p| !q.skip(&with(p), found))
-                        .collect();
-                    let distinct = match (self.lanes(sum, last), live.as_slice()) {
+                        .map(|p| {
+                            let mut child = shape.to_vec();
+                            child[p] = last;
+                            (p, child)
+                        })
+                        .filter(|(_, child)| !q.skip(child, found))
+                        .unzip();
+                    let distinct = match (lanes, live.as_slice()) {
                         (_, []) => Vec::new(),
                         (Some(_), _) => self.distinct_packed(keys, &live, last),
                         (None, &[p]) if self.bit_pass() => vec![self.distinct_keys(keys, p, last)],
                         _ => vec![false; live.len()],
                     };
-                    for (&p, distinct) in live.iter().zip(distinct) {
+                    for ((&p, child), distinct) in live.iter().zip(&shapes).zip(distinct) {
                         if !distinct {
                             // No bit pass, or a collision: the general check finds and
                             // describes the first failing box.
                             found.general.fetch_add(1, Ordering::Relaxed);
-                            if let Some(f) = self.leaf(keys, p, last, &with(p)) {
+                            if let Some(f) = self.leaf(keys, p, last, child) {
                                 q.record(f, found);
                             }
                         }
