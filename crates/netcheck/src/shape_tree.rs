@@ -9,14 +9,18 @@
 //! per nonzero part, and inner nodes are few: for k = 5 in 16 dimensions, 4,844 inner nodes
 //! serve 15,504 shapes.
 //!
-//! t = 0 in base 2^q (N = b^k points, one per box) is decided by setting bits only. The
-//! leaves of a node all add the same part v = k − Σd (in different dimensions), so when a
-//! lane of b^v bits fits in a 64-bit word they share one pass: one word per parent box, one
-//! lane per leaf, one read-modify-write per point for 64 / b^v leaves (4 in base 16, where
-//! 11,628 of the 15,504 shapes of k = 5 end in a part of 1). The read-modify-write into a
-//! cache-missing table is the cost of a leaf, so sharing it is what pays; digits of up to 8
-//! bits come from a byte column (the top 8 bits of each prefix), and key arrays of finished
-//! inner nodes are reused by the next, not zeroed afresh.
+//! t = 0 in base 2^q (N = b^k points, one per box) is decided by setting bits only, and by
+//! lanes: the leaves of a node all add parts of one width v, so a parent box gets a few 64-bit
+//! words (one cache line at most) holding a b^v-bit lane per leaf, and one pass over the
+//! points decides a group of leaves with one read-modify-write of a box's words per point.
+//! Where one-digit lanes fit (b ≤ 64) the leaves are **delegated** to the nodes of Σd = k − 1:
+//! a shape whose last nonzero part is v in dimension p is checked at the node ending in v − 1
+//! there, its part's last digit a b-bit lane beside that node's leaves of a first digit in a
+//! later dimension. So in base 16 every one of the 3,876 nodes of Σd = 4 decides all its
+//! leaves (up to 16 lanes of 16 bits) in one pass, and no shape needs a b^v-bit map of its own.
+//! The read-modify-write into a cache-missing table is the cost of a leaf, so sharing it is
+//! what pays; digits of up to 8 bits come from a byte column (the top 8 bits of each prefix),
+//! and key arrays of finished inner nodes are reused by the next, not zeroed afresh.
 //!
 //! Parallel: children of a node are checked by rayon tasks; a worker holds at most one key
 //! array per level of the walk (k − 1 arrays of N keys, 4 bytes each) besides its box
@@ -50,6 +54,8 @@ pub(crate) struct ShapeWalk<'a> {
 struct Walk<'a, 'b> {
     query: &'b ShapeWalk<'a>,
     narrow: Vec<Vec<u8>>,
+    /// Whether every leaf is checked at its node of Σd = k − 1 (see [`Walk::delegates`]).
+    delegate: bool,
 }
 
 /// What a walk has found so far.
@@ -101,14 +107,16 @@ impl ShapeWalk<'_> {
             }
             _ => Vec::new(),
         };
-        let walk = Walk {
+        let mut walk = Walk {
             query: self,
             narrow,
+            delegate: false,
         };
+        walk.delegate = walk.delegates();
         if self.k == 0 {
             // One shape (all zeros), one box holding every point.
             let shape = vec![0u32; dims];
-            let failure = walk.leaf(None, 0, 0, &shape);
+            let failure = walk.leaf(None, Part::head(0, 0), &shape);
             progress(1);
             return (failure, 1);
         }
@@ -127,11 +135,31 @@ impl ShapeWalk<'_> {
 /// are narrow (base 2), so deep binary levels keep the one-bitmap-per-leaf pass.
 const MAX_MASK_BYTES: usize = 4 << 20;
 
+/// The most 64-bit words a parent box's lanes take in a packed pass: one 64-byte cache line, so
+/// a point's bits for every leaf of its group are one line's read-modify-write.
+const MAX_BOX_WORDS: usize = 8;
+
+/// The packed pass's layout: leaves per pass and 64-bit words per parent box.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct Packing {
+    leaves: usize,
+    words: usize,
+}
+
 /// One task of a node's children: an inner child (dimension, part), or a group of leaves
 /// (dimensions) that share the node's keys and the part that completes Σd = k.
 enum Step {
     Inner(usize, u32),
-    Leaves(Vec<usize>),
+    Leaves(Vec<Part>),
+}
+
+/// Digits `from..from + width` (digit 0 most significant) of dimension `dim`: what a child
+/// shape adds to its node's box keys. The child has part `from + width` in `dim`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct Part {
+    dim: usize,
+    from: u32,
+    width: u32,
 }
 
 impl Walk<'_, '_> {
@@ -149,10 +177,34 @@ impl Walk<'_, '_> {
         let q = self.query;
         let dims = shape.len();
         let last = q.k - sum;
-        let lanes = self.lanes(sum, last);
-        let group = lanes.unwrap_or(1);
-        let leaves: Vec<usize> = (next..dims).collect();
-        let steps: Vec<Step> = leaves
+        let parts: Vec<Part> = if !self.delegate {
+            (next..dims)
+                .map(|dim| Part {
+                    dim,
+                    from: 0,
+                    width: last,
+                })
+                .collect()
+        } else if last == 1 {
+            // Every leaf one digit past this node: the node's last nonzero dimension's next
+            // digit (the leaf its parent delegated) and the first digit of each one after it.
+            let own = next.checked_sub(1).filter(|_| sum > 0);
+            own.into_iter()
+                .chain(next..dims)
+                .map(|dim| Part {
+                    dim,
+                    from: shape[dim],
+                    width: 1,
+                })
+                .collect()
+        } else {
+            Vec::new()
+        };
+        let lanes = parts
+            .first()
+            .and_then(|part| self.lanes(sum, part.width, parts.len()));
+        let group = lanes.map_or(1, |plan| plan.leaves);
+        let steps: Vec<Step> = parts
             .chunks(group)
             .map(|g| Step::Leaves(g.to_vec()))
             .chain((next..dims).flat_map(|p| (1..last).map(move |v| Step::Inner(p, v))))
@@ -162,28 +214,30 @@ impl Walk<'_, '_> {
                 return;
             }
             match step {
-                Step::Leaves(ps) => {
-                    let (live, shapes): (Vec<usize>, Vec<Vec<u32>>) = ps
+                Step::Leaves(parts) => {
+                    let (live, shapes): (Vec<Part>, Vec<Vec<u32>>) = parts
                         .into_iter()
-                        .map(|p| {
+                        .map(|part| {
                             let mut child = shape.to_vec();
-                            child[p] = last;
-                            (p, child)
+                            child[part.dim] = part.from + part.width;
+                            (part, child)
                         })
                         .filter(|(_, child)| !q.skip(child, found))
                         .unzip();
                     let distinct = match (lanes, live.as_slice()) {
                         (_, []) => Vec::new(),
-                        (Some(_), _) => self.distinct_packed(keys, &live, last),
-                        (None, &[p]) if self.bit_pass() => vec![self.distinct_keys(keys, p, last)],
+                        (Some(plan), _) => self.distinct_packed(keys, &live, plan.words),
+                        (None, &[part]) if self.bit_pass() => {
+                            vec![self.distinct_keys(keys, part)]
+                        }
                         _ => vec![false; live.len()],
                     };
-                    for ((&p, child), distinct) in live.iter().zip(&shapes).zip(distinct) {
+                    for ((&part, child), distinct) in live.iter().zip(&shapes).zip(distinct) {
                         if !distinct {
                             // No bit pass, or a collision: the general check finds and
                             // describes the first failing box.
                             found.general.fetch_add(1, Ordering::Relaxed);
-                            if let Some(f) = self.leaf(keys, p, last, child) {
+                            if let Some(f) = self.leaf(keys, part, child) {
                                 q.record(f, found);
                             }
                         }
@@ -196,12 +250,21 @@ impl Walk<'_, '_> {
                     if q.skip(&least_completion(&child, q.k), found) {
                         return;
                     }
-                    let extended = self.extend_all(keys, p, v);
+                    let extended = self.extend_all(keys, Part::head(p, v));
                     self.children(&child, p + 1, sum + v, Some(&extended), found, progress);
                     KEY_POOL.with(|pool| pool.borrow_mut().push(extended));
                 }
             }
         });
+    }
+
+    /// Whether every leaf is checked one digit past its node of Σd = k − 1: t = 0 in base
+    /// 2^q, one-digit lanes (b ≤ 64) and box words that fit [`MAX_MASK_BYTES`]. A shape whose
+    /// last nonzero part is v in dimension p is then checked at the node ending in v − 1
+    /// there (the part's last digit in a b-bit lane beside the node's other leaves), not by a
+    /// b^v-bit map of its own: each node of Σd = k − 1 decides all its leaves in one pass.
+    fn delegates(&self) -> bool {
+        self.query.k >= 1 && self.lanes(self.query.k - 1, 1, 1).is_some()
     }
 
     /// Whether leaves are checked by a pass that only sets bits: t = 0 (one point per box) in
@@ -210,44 +273,57 @@ impl Walk<'_, '_> {
         self.query.t_count == 1 && self.query.base.log2().is_some()
     }
 
-    /// Leaves per packed pass below a node with Σd = `sum` whose leaves add part `v`: each
-    /// parent box gets one 64-bit word holding a b^v-bit lane per leaf (bit d for v-digit
-    /// value d), so 64 / b^v leaves share one read-modify-write per point. None when the bit
-    /// pass does not apply, a lane would not fit in a word, or the words would exceed
-    /// [`MAX_MASK_BYTES`]. (Wider lanes sharing a cache line were measured no faster than
-    /// one bitmap per leaf: the cost is the read-modify-write, not the line.)
-    fn lanes(&self, sum: u32, v: u32) -> Option<usize> {
+    /// How the packed pass below a node with Σd = `sum` and `leaves` leaves of part `v` runs:
+    /// each parent box gets `words` 64-bit words holding a b^v-bit lane per leaf (bit d for
+    /// v-digit value d), so one box's words take every point's bits of up to `leaves` leaves
+    /// at once. The words are as few as hold the leaves, at most [`MAX_BOX_WORDS`] (one cache
+    /// line) and at most [`MAX_MASK_BYTES`] in all. None when the bit pass does not apply or a
+    /// lane would not fit in a word.
+    fn lanes(&self, sum: u32, v: u32, leaves: usize) -> Option<Packing> {
         let q = self.query;
         let lane = q.base.pow(v).filter(|&w| w <= 64)? as usize;
-        let words = q.base.pow(sum).expect("validated") as usize;
-        (self.bit_pass() && words.checked_mul(8)? <= MAX_MASK_BYTES).then_some(64 / lane)
+        let boxes = q.base.pow(sum).expect("validated") as usize;
+        let fit = MAX_MASK_BYTES / boxes.checked_mul(8)?;
+        if !self.bit_pass() || fit == 0 || leaves == 0 {
+            return None;
+        }
+        let per_word = 64 / lane;
+        let words = leaves
+            .div_ceil(per_word)
+            .next_power_of_two()
+            .min(MAX_BOX_WORDS)
+            .min(1 << fit.ilog2());
+        Some(Packing {
+            leaves: words * per_word,
+            words,
+        })
     }
 
-    /// Keys of the parent extended by part `v` in dimension `p`, for points start..+len
-    /// (the empty shape's keys are 0). Always inlined, so the t = 0 pass builds its keys with
-    /// the vector width it was compiled for.
+    /// Keys of the parent extended by `part`'s digits, for points start..+len (the empty
+    /// shape's keys are 0). Always inlined, so the t = 0 pass builds its keys with the vector
+    /// width it was compiled for.
     #[inline(always)]
-    fn extend(&self, parent: Option<&[u32]>, p: usize, v: u32, start: usize, out: &mut [u32]) {
+    fn extend(&self, parent: Option<&[u32]>, part: Part, start: usize, out: &mut [u32]) {
         let q = self.query;
         match q.base.log2() {
-            Some(log) => extend_pow2(parent, &self.column(p, v), log * v, start, out),
+            Some(log) => extend_pow2(parent, &self.column(part), log * part.width, start, out),
             None => {
                 let end = start + out.len();
                 let parent = parent.map(|parent| &parent[start..end]);
-                let cut = q.base.pow(q.depth - v).expect("validated") as u32;
-                let place = q.base.pow(v).expect("validated") as u32;
-                let digits = &q.prefix[p][start..end];
-                extend_with(parent, digits, out, |a, x| a * place + x / cut);
+                let below = q.depth - part.from - part.width;
+                let cut = q.base.pow(below).expect("validated") as u32;
+                let place = q.base.pow(part.width).expect("validated") as u32;
+                let digits = &q.prefix[part.dim][start..end];
+                extend_with(parent, digits, out, |a, x| a * place + x / cut % place);
             }
         }
     }
 
-    /// Whether the keys of all points (parent keys extended by part `v` in dimension `p`)
-    /// are distinct: the t = 0 check in base 2^q, one bit per box. N keys below N = b^k are
-    /// distinct exactly when N bits end up set, so the pass only sets bits (no test per point)
-    /// and a popcount decides. Says only yes or no; a `false` is described by the general
-    /// check.
-    fn distinct_keys(&self, parent: Option<&[u32]>, p: usize, v: u32) -> bool {
+    /// Whether the keys of all points (parent keys extended by `part`) are distinct: the
+    /// t = 0 check in base 2^q, one bit per box. N keys below N = b^k are distinct exactly
+    /// when N bits end up set, so the pass only sets bits (no test per point) and a popcount
+    /// decides. Says only yes or no; a `false` is described by the general check.
+    fn distinct_keys(&self, parent: Option<&[u32]>, part: Part) -> bool {
         let q = self.query;
         let cells = q.base.pow(q.k).expect("validated") as usize;
         SCRATCH.with(|scratch| {
@@ -255,64 +331,84 @@ impl Walk<'_, '_> {
             bits.clear();
             bits.resize(cells.div_ceil(32), 0);
             let log = q.base.log2().expect("the bit pass is for b = 2^q");
-            set_key_bits(q.n, &mut bits, parent, &self.column(p, v), log * v);
+            set_key_bits(q.n, &mut bits, parent, &self.column(part), log * part.width);
             bits.iter().map(|w| w.count_ones() as u64).sum::<u64>() == q.n as u64
         })
     }
 
     /// [`Self::distinct_keys`] for a group of leaves sharing the parent keys (b^Σd parent
-    /// boxes) and part `v`, in one pass: lane l of the word of parent box K gets bit d for
-    /// each point of that box whose dimension `dims[l]` has v-digit value d. A leaf's keys
-    /// (K, d) are distinct exactly when its lane is full in every word, since its N = b^Σd ·
-    /// b^v points must then hit all b^Σd · b^v pairs once.
-    fn distinct_packed(&self, parent: Option<&[u32]>, dims: &[usize], v: u32) -> Vec<bool> {
+    /// boxes) and the width v of their parts, in one pass: lane l of the words of parent box
+    /// K gets bit d for each point of that box whose `parts[l]` digits have value d. A leaf's
+    /// keys (K, d) are distinct exactly when its lane is full in every box, since its
+    /// N = b^Σd · b^v points must then hit all b^Σd · b^v pairs once.
+    fn distinct_packed(&self, parent: Option<&[u32]>, parts: &[Part], words: usize) -> Vec<bool> {
         let q = self.query;
         let log = q.base.log2().expect("packed for b = 2^q");
+        let v = parts[0].width;
+        assert!(parts.iter().all(|part| part.width == v), "one lane width");
         let (boxes, lane) = (q.n >> (log * v), 1u32 << (log * v));
+        assert!(
+            parts.len() * lane as usize <= words * 64,
+            "the lanes fit the box words"
+        );
         MASKS.with(|masks| {
             let mut masks = masks.borrow_mut();
             masks.clear();
-            masks.resize(boxes, 0);
-            let columns: Vec<DigitColumn> = dims.iter().map(|&p| self.column(p, v)).collect();
-            set_lane_bits(q.n, &mut masks, parent, &columns, lane);
+            masks.resize(boxes * words, 0);
+            let columns: Vec<DigitColumn> = parts.iter().map(|&part| self.column(part)).collect();
+            match words {
+                1 => set_lane_bits::<1>(q.n, &mut masks, parent, &columns, lane),
+                2 => set_lane_bits::<2>(q.n, &mut masks, parent, &columns, lane),
+                4 => set_lane_bits::<4>(q.n, &mut masks, parent, &columns, lane),
+                8 => set_lane_bits::<8>(q.n, &mut masks, parent, &columns, lane),
+                _ => unreachable!("box words are 1, 2, 4 or 8"),
+            }
             let full = if lane == 64 {
                 u64::MAX
             } else {
                 (1u64 << lane) - 1
             };
-            (0..dims.len())
+            // A lane is full in every box exactly when it is full in the AND of all boxes.
+            let mut every = [u64::MAX; MAX_BOX_WORDS];
+            for box_words in masks.chunks_exact(words) {
+                for (acc, &w) in every.iter_mut().zip(box_words) {
+                    *acc &= w;
+                }
+            }
+            (0..parts.len())
                 .map(|l| {
-                    let shift = l as u32 * lane;
-                    masks.iter().all(|&w| (w >> shift) & full == full)
+                    let (word, shift) = (l * lane as usize / 64, l as u32 * lane % 64);
+                    (every[word] >> shift) & full == full
                 })
                 .collect()
         })
     }
 
-    /// Where the v-digit values of dimension `p` are read (base 2^q): the narrow column when
-    /// q·v ≤ 8 bits fit in it, else the prefixes.
-    fn column(&self, p: usize, v: u32) -> DigitColumn<'_> {
+    /// Where `part`'s digits are read (base 2^q): the narrow column when they lie in its top
+    /// 8 bits, else the prefixes.
+    fn column(&self, part: Part) -> DigitColumn<'_> {
         let q = self.query;
         let log = q.base.log2().expect("a power-of-two base");
-        if log * v <= 8 && !self.narrow.is_empty() {
-            DigitColumn::Narrow(&self.narrow[p], 8 - log * v)
+        let (end, mask) = (log * (part.from + part.width), low_bits(log * part.width));
+        if end <= 8 && !self.narrow.is_empty() {
+            DigitColumn::Narrow(&self.narrow[part.dim], 8 - end, mask)
         } else {
-            DigitColumn::Wide(q.prefix[p], log * (q.depth - v))
+            DigitColumn::Wide(q.prefix[part.dim], log * q.depth - end, mask)
         }
     }
 
     /// The keys of an inner node, for every point.
-    fn extend_all(&self, parent: Option<&[u32]>, p: usize, v: u32) -> Vec<u32> {
+    fn extend_all(&self, parent: Option<&[u32]>, part: Part) -> Vec<u32> {
         let n = self.query.n;
         let mut out = KEY_POOL
             .with(|pool| pool.borrow_mut().pop())
             .filter(|keys| keys.len() == n)
             .unwrap_or_else(|| vec![0u32; n]);
         match self.query.base.log2() {
-            Some(log) => extend_all_pow2(parent, &self.column(p, v), log * v, &mut out),
+            Some(log) => extend_all_pow2(parent, &self.column(part), log * part.width, &mut out),
             None => {
                 for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
-                    self.extend(parent, p, v, c * CHUNK, chunk);
+                    self.extend(parent, part, c * CHUNK, chunk);
                 }
             }
         }
@@ -321,20 +417,36 @@ impl Walk<'_, '_> {
 
     /// The general box check of a leaf: the parent's keys extended chunk by chunk into the
     /// counters.
-    fn leaf(&self, parent: Option<&[u32]>, p: usize, v: u32, shape: &[u32]) -> Option<BoxFailure> {
+    fn leaf(&self, parent: Option<&[u32]>, part: Part, shape: &[u32]) -> Option<BoxFailure> {
         let q = self.query;
         SCRATCH.with(|scratch| {
             let mut scratch = scratch.borrow_mut();
             let fill = |start: usize, keys: &mut [u32]| {
-                if v == 0 {
+                if part.width == 0 {
                     keys.fill(0);
                 } else {
-                    self.extend(parent, p, v, start, keys);
+                    self.extend(parent, part, start, keys);
                 }
             };
             check_shape(fill, 0, q.n, q.base, q.k, q.t_count, shape, &mut scratch)
         })
     }
+}
+
+impl Part {
+    /// The first `width` digits of dimension `dim`.
+    fn head(dim: usize, width: u32) -> Part {
+        Part {
+            dim,
+            from: 0,
+            width,
+        }
+    }
+}
+
+/// The low `bits` bits set (all 32 for 32 or more).
+fn low_bits(bits: u32) -> u32 {
+    u32::MAX.checked_shr(32 - bits.min(32)).unwrap_or(0)
 }
 
 impl ShapeWalk<'_> {
@@ -404,24 +516,25 @@ fn extend_with<D: Copy>(
 macro_rules! with_avx2 {
     (
         $(#[$doc:meta])*
-        fn $name:ident($($arg:ident: $ty:ty),* $(,)?) => $portable:ident
+        fn $name:ident $(<const $g:ident: usize>)? ($($arg:ident: $ty:ty),* $(,)?)
+            => $portable:ident
     ) => {
         $(#[$doc])*
         ///
         /// Compiled once more with AVX2 and BMI2, taken when the CPU has them.
-        fn $name($($arg: $ty),*) {
+        fn $name $(<const $g: usize>)? ($($arg: $ty),*) {
             #[cfg(target_arch = "x86_64")]
             if std::arch::is_x86_feature_detected!("avx2")
                 && std::arch::is_x86_feature_detected!("bmi2")
             {
                 #[target_feature(enable = "avx2,bmi2")]
-                fn wide($($arg: $ty),*) {
-                    $portable($($arg),*)
+                fn wide $(<const $g: usize>)? ($($arg: $ty),*) {
+                    $portable $(::<$g>)? ($($arg),*)
                 }
                 // SAFETY: AVX2 and BMI2 were detected on this CPU just above.
-                return unsafe { wide($($arg),*) };
+                return unsafe { wide $(::<$g>)? ($($arg),*) };
             }
-            $portable($($arg),*)
+            $portable $(::<$g>)? ($($arg),*)
         }
     };
 }
@@ -440,14 +553,16 @@ fn extend_pow2(
     let end = start + out.len();
     let parent = parent.map(|parent| &parent[start..end]);
     match *column {
-        DigitColumn::Narrow(digits, cut) => {
+        DigitColumn::Narrow(digits, cut, mask) => {
             extend_with(parent, &digits[start..end], out, |a, x| {
-                (a << shift) | (u32::from(x) >> cut)
+                (a << shift) | ((u32::from(x) >> cut) & mask)
             })
         }
-        DigitColumn::Wide(digits, cut) => extend_with(parent, &digits[start..end], out, |a, x| {
-            (a << shift) | (x >> cut)
-        }),
+        DigitColumn::Wide(digits, cut, mask) => {
+            extend_with(parent, &digits[start..end], out, |a, x| {
+                (a << shift) | ((x >> cut) & mask)
+            })
+        }
     }
 }
 
@@ -499,20 +614,25 @@ fn set_key_bits_portable(
     }
 }
 
-/// The v-digit values of one dimension in base 2^q: a column and the shift that cuts its
-/// entries to v digits.
+/// A part's digit values of one dimension in base 2^q: a column, the shift that drops the
+/// digits below the part and the mask that drops those above it.
 enum DigitColumn<'a> {
     /// Top 8 bits of each prefix.
-    Narrow(&'a [u8], u32),
+    Narrow(&'a [u8], u32, u32),
     /// The prefixes floor(x·b^depth).
-    Wide(&'a [u32], u32),
+    Wide(&'a [u32], u32, u32),
 }
 
+/// Points per block of a packed pass: their lane words (at most [`MAX_BOX_WORDS`] each) stay
+/// in L1 between the column loops and the read-modify-writes.
+const LANE_BLOCK: usize = 256;
+
 with_avx2! {
-    /// ORs into `masks[parent key of point i]` (keys 0 for the empty shape) the lane bits of
-    /// points 0..n: bit `l·lane + d` for lane l, whose dimension's v-digit value is d (from
+    /// ORs into the `M` words of parent box K (`masks[K·M..K·M + M]`, keys 0 for the empty
+    /// shape) the lane bits of points 0..n: bit `l·lane + d` of the box's words (word-major
+    /// bits, word 0 first) for lane l, whose dimension's v-digit value is d (from
     /// `columns[l]`).
-    fn set_lane_bits(
+    fn set_lane_bits<const M: usize>(
         n: usize,
         masks: &mut [u64],
         parent: Option<&[u32]>,
@@ -522,47 +642,58 @@ with_avx2! {
 }
 
 #[inline(always)]
-fn set_lane_bits_portable(
+fn set_lane_bits_portable<const M: usize>(
     n: usize,
     masks: &mut [u64],
     parent: Option<&[u32]>,
     columns: &[DigitColumn],
     lane: u32,
 ) {
-    let mut lanes = [0u64; CHUNK];
-    for start in (0..n).step_by(CHUNK) {
-        let end = (start + CHUNK).min(n);
-        let lanes = &mut lanes[..end - start];
-        lanes.fill(0);
+    // Word-major, so each column loop writes one contiguous word array (it vectorizes).
+    let mut lanes = [[0u64; LANE_BLOCK]; M];
+    for start in (0..n).step_by(LANE_BLOCK) {
+        let end = (start + LANE_BLOCK).min(n);
+        let len = end - start;
+        lanes.iter_mut().for_each(|w| w[..len].fill(0));
         for (l, column) in columns.iter().enumerate() {
-            let offset = u64::from(l as u32 * lane);
+            let bit = l as u32 * lane;
+            let (word, offset) = ((bit / 64) as usize, u64::from(bit % 64));
+            let lanes = &mut lanes[word][..len];
             match *column {
-                DigitColumn::Narrow(digits, cut) => {
+                DigitColumn::Narrow(digits, cut, mask) => {
                     for (w, &x) in lanes.iter_mut().zip(&digits[start..end]) {
-                        *w |= 1u64 << (offset + u64::from(x >> cut));
+                        *w |= 1u64 << (offset + u64::from((u32::from(x) >> cut) & mask));
                     }
                 }
-                DigitColumn::Wide(digits, cut) => {
+                DigitColumn::Wide(digits, cut, mask) => {
                     for (w, &x) in lanes.iter_mut().zip(&digits[start..end]) {
-                        *w |= 1u64 << (offset + u64::from(x >> cut));
+                        *w |= 1u64 << (offset + u64::from((x >> cut) & mask));
                     }
                 }
             }
         }
         match parent {
             Some(parent) => {
-                for (&key, &bits) in parent[start..end].iter().zip(lanes.iter()) {
-                    masks[key as usize] |= bits;
+                for (i, &key) in parent[start..end].iter().enumerate() {
+                    let at = key as usize * M;
+                    let words = &mut masks[at..at + M];
+                    for (w, lane_words) in words.iter_mut().zip(&lanes) {
+                        *w |= lane_words[i];
+                    }
                 }
             }
-            None => masks[0] |= lanes.iter().fold(0, |acc, &bits| acc | bits),
+            None => {
+                for (w, lane_words) in masks[..M].iter_mut().zip(&lanes) {
+                    *w |= lane_words[..len].iter().fold(0, |acc, &bits| acc | bits);
+                }
+            }
         }
     }
 }
 
 #[cfg(test)]
 mod tests {
-    use super::{least_completion, ShapeWalk, Walk, MAX_MASK_BYTES};
+    use super::{least_completion, Packing, Part, ShapeWalk, Walk, MAX_MASK_BYTES};
     use crate::CheckBase;
     use gartowen_core::{PowerOfTwoBase, SplitMix64, Width};
     use gartowen_seq::faure::faure;
@@ -632,25 +763,30 @@ mod tests {
                     } else {
                         Vec::new()
                     },
+                    delegate: false,
                 };
                 // (parent keys, Σd of the parent, first dimension after it)
                 let mut parents = vec![(None, 0u32, 0usize)];
                 for p0 in 0..dims {
                     for sum in 1..m {
-                        parents.push((Some(walk.extend_all(None, p0, sum)), sum, p0 + 1));
+                        parents.push((
+                            Some(walk.extend_all(None, Part::head(p0, sum))),
+                            sum,
+                            p0 + 1,
+                        ));
                     }
                 }
                 for (keys, sum, next) in &parents {
                     let v = m - sum;
-                    let Some(lanes) = walk.lanes(*sum, v) else {
+                    let leaves: Vec<Part> = (*next..dims).map(|p| Part::head(p, v)).collect();
+                    let Some(plan) = walk.lanes(*sum, v, leaves.len()) else {
                         continue;
                     };
-                    let leaves: Vec<usize> = (*next..dims).collect();
-                    for group in leaves.chunks(lanes) {
-                        let packed = walk.distinct_packed(keys.as_deref(), group, v);
+                    for group in leaves.chunks(plan.leaves) {
+                        let packed = walk.distinct_packed(keys.as_deref(), group, plan.words);
                         assert_eq!(packed.len(), group.len());
-                        for (&p, &full) in group.iter().zip(&packed) {
-                            let own = walk.distinct_keys(keys.as_deref(), p, v);
+                        for (&part, &full) in group.iter().zip(&packed) {
+                            let (p, own) = (part.dim, walk.distinct_keys(keys.as_deref(), part));
                             assert_eq!(full, own, "base {b} swaps {swaps} Σd {sum} dim {p}");
                             assert!(swaps > 0 || full, "a net's lane is full");
                             lanes_checked += 1;
@@ -723,50 +859,76 @@ mod tests {
         }
     }
 
+    /// A walk's plan, built by hand (no points are read).
+    fn plan_walk<'a, 'b>(query: &'b ShapeWalk<'a>) -> Walk<'a, 'b> {
+        let mut walk = Walk {
+            query,
+            narrow: Vec::new(),
+            delegate: false,
+        };
+        walk.delegate = walk.delegates();
+        walk
+    }
+
     #[test]
-    fn leaves_share_a_word_exactly_when_their_lanes_fit() {
+    fn leaves_share_box_words_exactly_when_their_lanes_fit() {
         let column = vec![0u32; 1];
         let prefix = [column.as_slice()];
-        // Base 16: a one-digit lane is 16 bits (4 per word), two digits are 256 bits (none).
+        let packing = |leaves, words| Some(Packing { leaves, words });
+        // Base 16: one-digit lanes are 16 bits, 4 per word; as few words as hold the leaves
+        // (a power of two, at most 8); two digits are 256 bits (no lane).
         let w16 = walk_of(&prefix, 16, 5);
-        let walk = Walk {
-            query: &w16,
-            narrow: Vec::new(),
-        };
-        assert_eq!(walk.lanes(4, 1), Some(4));
-        assert_eq!(walk.lanes(3, 2), None);
+        let walk = plan_walk(&w16);
+        assert!(
+            walk.delegate,
+            "base 16, k = 5: one-digit lanes of 16^4 boxes fit"
+        );
+        assert_eq!(walk.lanes(4, 1, 1), packing(4, 1));
+        assert_eq!(walk.lanes(4, 1, 4), packing(4, 1));
+        assert_eq!(walk.lanes(4, 1, 5), packing(8, 2));
+        assert_eq!(walk.lanes(4, 1, 9), packing(16, 4));
+        assert_eq!(walk.lanes(4, 1, 16), packing(16, 4));
+        assert_eq!(walk.lanes(4, 1, 0), None);
+        assert_eq!(walk.lanes(3, 2, 4), None);
+        // 8 words (one cache line) at most: 16^3 boxes · 64 bytes fit, and 32 leaves.
+        assert_eq!(walk.lanes(3, 1, 40), packing(32, 8));
+        // The box words are capped by MAX_MASK_BYTES: 16^4 boxes take at most 8 words
+        // (4 MiB), 16^5 at most... none (8 MiB for one word).
+        assert_eq!((1usize << 16) * 8 * 8, MAX_MASK_BYTES);
+        assert_eq!(walk.lanes(4, 1, 40), packing(32, 8));
+        assert_eq!(walk.lanes(5, 1, 1), None);
         // Base 2: 2-bit to 64-bit lanes; the words of 2^19 parent boxes fit, 2^20 do not.
         let w2 = walk_of(&prefix, 2, 21);
-        let walk = Walk {
-            query: &w2,
-            narrow: Vec::new(),
-        };
-        assert_eq!(walk.lanes(5, 1), Some(32));
-        assert_eq!(walk.lanes(5, 6), Some(1));
-        assert_eq!(walk.lanes(5, 7), None);
-        assert_eq!((1usize << 19) * 8, MAX_MASK_BYTES);
-        assert_eq!(walk.lanes(19, 1), Some(32));
-        assert_eq!(walk.lanes(20, 1), None);
+        let walk = plan_walk(&w2);
+        assert!(
+            !walk.delegate,
+            "2^20 boxes of one word exceed MAX_MASK_BYTES"
+        );
+        assert_eq!(walk.lanes(5, 1, 32), packing(32, 1));
+        assert_eq!(walk.lanes(5, 1, 33), packing(64, 2));
+        assert_eq!(walk.lanes(5, 6, 1), packing(1, 1));
+        assert_eq!(walk.lanes(5, 6, 3), packing(4, 4));
+        assert_eq!(walk.lanes(5, 7, 1), None);
+        assert_eq!(walk.lanes(19, 1, 40), packing(32, 1));
+        assert_eq!(walk.lanes(18, 1, 40), packing(64, 2));
+        assert_eq!(walk.lanes(20, 1, 1), None);
+        assert!(plan_walk(&walk_of(&prefix, 2, 20)).delegate);
+        // Base 128: a one-digit lane is 128 bits, so no leaf is delegated.
+        assert!(!plan_walk(&walk_of(&prefix, 128, 3)).delegate);
+        assert!(plan_walk(&walk_of(&prefix, 64, 3)).delegate);
         // Only t = 0 (one point per box) is decided by set bits.
         let t1 = ShapeWalk {
             t_count: 2,
             ..walk_of(&prefix, 16, 5)
         };
-        let walk = Walk {
-            query: &t1,
-            narrow: Vec::new(),
-        };
-        assert_eq!(walk.lanes(4, 1), None);
-        assert!(!walk.bit_pass());
+        let walk = plan_walk(&t1);
+        assert_eq!(walk.lanes(4, 1, 4), None);
+        assert!(!walk.bit_pass() && !walk.delegate);
         let prime = ShapeWalk {
             base: CheckBase::new(3).unwrap(),
             ..walk_of(&prefix, 16, 5)
         };
-        assert!(!Walk {
-            query: &prime,
-            narrow: Vec::new()
-        }
-        .bit_pass());
+        assert!(!plan_walk(&prime).bit_pass());
     }
 
     #[test]
