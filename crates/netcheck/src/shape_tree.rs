@@ -121,7 +121,7 @@ impl ShapeWalk<'_> {
             return (failure, 1);
         }
         let root = vec![0u32; dims];
-        walk.children(&root, 0, 0, None, &found, progress);
+        walk.children(&root, 0, 0, NodeKeys::Stored(None), &found, progress);
         let general = found.general.into_inner();
         (
             found.best.into_inner().expect("no worker panicked"),
@@ -153,6 +153,27 @@ enum Step {
     Leaves(Vec<Part>),
 }
 
+/// Where a node's box keys come from.
+#[derive(Debug, Clone, Copy)]
+enum NodeKeys<'k> {
+    /// Stored for every point (None: the empty shape's, all 0).
+    Stored(Option<&'k [u32]>),
+    /// Not stored: the parent's stored keys extended by the node's last part, built a block
+    /// at a time by the pass that reads them (a node of Σd = k − 1 whose keys only its own
+    /// leaf pass reads).
+    Extended(Option<&'k [u32]>, Part),
+}
+
+impl<'k> NodeKeys<'k> {
+    /// The stored keys, if they are.
+    fn stored(self) -> Option<Option<&'k [u32]>> {
+        match self {
+            NodeKeys::Stored(keys) => Some(keys),
+            NodeKeys::Extended(..) => None,
+        }
+    }
+}
+
 /// Digits `from..from + width` (digit 0 most significant) of dimension `dim`: what a child
 /// shape adds to its node's box keys. The child has part `from + width` in `dim`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -164,30 +185,78 @@ struct Part {
 
 impl Walk<'_, '_> {
     /// Checks the subtree below the partial shape `shape` (Σd = `sum`, next part at a
-    /// dimension ≥ `next`), whose keys are `keys` (None for the empty shape).
+    /// dimension ≥ `next`), whose keys are `keys`.
     fn children(
         &self,
         shape: &[u32],
         next: usize,
         sum: u32,
-        keys: Option<&[u32]>,
+        keys: NodeKeys,
         found: &Found,
         progress: Progress,
     ) {
         let q = self.query;
         let dims = shape.len();
         let last = q.k - sum;
-        let parts: Vec<Part> = if !self.delegate {
-            (next..dims)
-                .map(|dim| Part {
-                    dim,
-                    from: 0,
-                    width: last,
-                })
-                .collect()
+        let parts = self.leaf_parts(shape, next, sum);
+        let lanes = parts
+            .first()
+            .and_then(|part| self.lanes(sum, part.width, parts.len()));
+        let group = lanes.map_or(1, |plan| plan.leaves);
+        if let NodeKeys::Extended(..) = keys {
+            // A node of Σd = k − 1 whose keys were not stored: its leaves only, one group
+            // after another in this task (their lanes fit one pass but for very many dimensions).
+            for parts in parts.chunks(group) {
+                self.decide(keys, shape, parts.to_vec(), lanes, found, progress);
+            }
+            return;
+        }
+        let steps: Vec<Step> = parts
+            .chunks(group)
+            .map(|g| Step::Leaves(g.to_vec()))
+            .chain((next..dims).flat_map(|p| (1..last).map(move |v| Step::Inner(p, v))))
+            .collect();
+        steps.into_par_iter().for_each(|step| {
+            if found.stop.load(Ordering::Relaxed) {
+                return;
+            }
+            match step {
+                Step::Leaves(parts) => self.decide(keys, shape, parts, lanes, found, progress),
+                Step::Inner(p, v) => {
+                    let mut child = shape.to_vec();
+                    child[p] = v;
+                    if q.skip(&least_completion(&child, q.k), found) {
+                        return;
+                    }
+                    let part = Part::head(p, v);
+                    let parent = keys
+                        .stored()
+                        .expect("only stored nodes have inner children");
+                    if self.delegate && sum + v + 1 == q.k {
+                        // Leaves only below: their pass extends this node's keys on the fly.
+                        let keys = NodeKeys::Extended(parent, part);
+                        self.children(&child, p + 1, sum + v, keys, found, progress);
+                    } else {
+                        let extended = self.extend_all(parent, part);
+                        let keys = NodeKeys::Stored(Some(&extended));
+                        self.children(&child, p + 1, sum + v, keys, found, progress);
+                        KEY_POOL.with(|pool| pool.borrow_mut().push(extended));
+                    }
+                }
+            }
+        });
+    }
+
+    /// The parts that complete the node `shape` (Σd = `sum`, later parts at dimensions ≥
+    /// `next`) to its leaves: the rest of k in each later dimension, or, when leaves are
+    /// delegated, one more digit at a node of Σd = k − 1 and none elsewhere.
+    fn leaf_parts(&self, shape: &[u32], next: usize, sum: u32) -> Vec<Part> {
+        let (dims, last) = (shape.len(), self.query.k - sum);
+        if !self.delegate {
+            (next..dims).map(|dim| Part::head(dim, last)).collect()
         } else if last == 1 {
-            // Every leaf one digit past this node: the node's last nonzero dimension's next
-            // digit (the leaf its parent delegated) and the first digit of each one after it.
+            // The node's last nonzero dimension's next digit (the leaf its parent delegated)
+            // and the first digit of each dimension after it.
             let own = next.checked_sub(1).filter(|_| sum > 0);
             own.into_iter()
                 .chain(next..dims)
@@ -199,63 +268,64 @@ impl Walk<'_, '_> {
                 .collect()
         } else {
             Vec::new()
+        }
+    }
+
+    /// Decides the leaves `node` + `parts` of one group: by their lanes in one pass when
+    /// `lanes` packs them, by one bitmap for a lone leaf of the bit pass, and by the general
+    /// count (which finds and describes the first failing box) otherwise or on a collision.
+    fn decide(
+        &self,
+        keys: NodeKeys,
+        node: &[u32],
+        parts: Vec<Part>,
+        lanes: Option<Packing>,
+        found: &Found,
+        progress: Progress,
+    ) {
+        let q = self.query;
+        let (live, shapes): (Vec<Part>, Vec<Vec<u32>>) = parts
+            .into_iter()
+            .map(|part| {
+                let mut child = node.to_vec();
+                child[part.dim] = part.from + part.width;
+                (part, child)
+            })
+            .filter(|(_, child)| !q.skip(child, found))
+            .unzip();
+        // A node whose keys were not stored builds them once, if a leaf needs them.
+        let mut built: Option<Vec<u32>> = None;
+        let distinct = match (lanes, live.as_slice()) {
+            (_, []) => Vec::new(),
+            (Some(plan), _) => self.distinct_packed(keys, &live, plan.words),
+            (None, &[part]) if self.bit_pass() => match keys {
+                NodeKeys::Stored(keys) => vec![self.distinct_keys(keys, part)],
+                NodeKeys::Extended(parent, node_part) => {
+                    let keys = built.get_or_insert_with(|| self.extend_all(parent, node_part));
+                    vec![self.distinct_keys(Some(keys), part)]
+                }
+            },
+            _ => vec![false; live.len()],
         };
-        let lanes = parts
-            .first()
-            .and_then(|part| self.lanes(sum, part.width, parts.len()));
-        let group = lanes.map_or(1, |plan| plan.leaves);
-        let steps: Vec<Step> = parts
-            .chunks(group)
-            .map(|g| Step::Leaves(g.to_vec()))
-            .chain((next..dims).flat_map(|p| (1..last).map(move |v| Step::Inner(p, v))))
-            .collect();
-        steps.into_par_iter().for_each(|step| {
-            if found.stop.load(Ordering::Relaxed) {
-                return;
-            }
-            match step {
-                Step::Leaves(parts) => {
-                    let (live, shapes): (Vec<Part>, Vec<Vec<u32>>) = parts
-                        .into_iter()
-                        .map(|part| {
-                            let mut child = shape.to_vec();
-                            child[part.dim] = part.from + part.width;
-                            (part, child)
-                        })
-                        .filter(|(_, child)| !q.skip(child, found))
-                        .unzip();
-                    let distinct = match (lanes, live.as_slice()) {
-                        (_, []) => Vec::new(),
-                        (Some(plan), _) => self.distinct_packed(keys, &live, plan.words),
-                        (None, &[part]) if self.bit_pass() => {
-                            vec![self.distinct_keys(keys, part)]
-                        }
-                        _ => vec![false; live.len()],
-                    };
-                    for ((&part, child), distinct) in live.iter().zip(&shapes).zip(distinct) {
-                        if !distinct {
-                            // No bit pass, or a collision: the general check finds and
-                            // describes the first failing box.
-                            found.general.fetch_add(1, Ordering::Relaxed);
-                            if let Some(f) = self.leaf(keys, part, child) {
-                                q.record(f, found);
-                            }
-                        }
-                        progress(1);
+        for ((&part, child), distinct) in live.iter().zip(&shapes).zip(distinct) {
+            if !distinct {
+                found.general.fetch_add(1, Ordering::Relaxed);
+                let failure = match keys {
+                    NodeKeys::Stored(keys) => self.leaf(keys, part, child),
+                    NodeKeys::Extended(parent, node_part) => {
+                        let keys = built.get_or_insert_with(|| self.extend_all(parent, node_part));
+                        self.leaf(Some(keys), part, child)
                     }
-                }
-                Step::Inner(p, v) => {
-                    let mut child = shape.to_vec();
-                    child[p] = v;
-                    if q.skip(&least_completion(&child, q.k), found) {
-                        return;
-                    }
-                    let extended = self.extend_all(keys, Part::head(p, v));
-                    self.children(&child, p + 1, sum + v, Some(&extended), found, progress);
-                    KEY_POOL.with(|pool| pool.borrow_mut().push(extended));
+                };
+                if let Some(f) = failure {
+                    q.record(f, found);
                 }
             }
-        });
+            progress(1);
+        }
+        if let Some(keys) = built {
+            KEY_POOL.with(|pool| pool.borrow_mut().push(keys));
+        }
     }
 
     /// Whether every leaf is checked one digit past its node of Σd = k − 1: t = 0 in base
@@ -341,7 +411,7 @@ impl Walk<'_, '_> {
     /// K gets bit d for each point of that box whose `parts[l]` digits have value d. A leaf's
     /// keys (K, d) are distinct exactly when its lane is full in every box, since its
     /// N = b^Σd · b^v points must then hit all b^Σd · b^v pairs once.
-    fn distinct_packed(&self, parent: Option<&[u32]>, parts: &[Part], words: usize) -> Vec<bool> {
+    fn distinct_packed(&self, keys: NodeKeys, parts: &[Part], words: usize) -> Vec<bool> {
         let q = self.query;
         let log = q.base.log2().expect("packed for b = 2^q");
         let v = parts[0].width;
@@ -356,11 +426,17 @@ impl Walk<'_, '_> {
             masks.clear();
             masks.resize(boxes * words, 0);
             let columns: Vec<DigitColumn> = parts.iter().map(|&part| self.column(part)).collect();
+            let (parent, node) = match keys {
+                NodeKeys::Stored(keys) => (keys, None),
+                NodeKeys::Extended(parent, part) => (parent, Some(part)),
+            };
+            let node_column = node.map(|part| (self.column(part), log * part.width));
+            let node = node_column.as_ref().map(|(column, shift)| (column, *shift));
             match words {
-                1 => set_lane_bits::<1>(q.n, &mut masks, parent, &columns, lane),
-                2 => set_lane_bits::<2>(q.n, &mut masks, parent, &columns, lane),
-                4 => set_lane_bits::<4>(q.n, &mut masks, parent, &columns, lane),
-                8 => set_lane_bits::<8>(q.n, &mut masks, parent, &columns, lane),
+                1 => set_lane_bits::<1>(q.n, &mut masks, parent, node, &columns, lane),
+                2 => set_lane_bits::<2>(q.n, &mut masks, parent, node, &columns, lane),
+                4 => set_lane_bits::<4>(q.n, &mut masks, parent, node, &columns, lane),
+                8 => set_lane_bits::<8>(q.n, &mut masks, parent, node, &columns, lane),
                 _ => unreachable!("box words are 1, 2, 4 or 8"),
             }
             let full = if lane == 64 {
@@ -628,14 +704,15 @@ enum DigitColumn<'a> {
 const LANE_BLOCK: usize = 256;
 
 with_avx2! {
-    /// ORs into the `M` words of parent box K (`masks[K·M..K·M + M]`, keys 0 for the empty
-    /// shape) the lane bits of points 0..n: bit `l·lane + d` of the box's words (word-major
-    /// bits, word 0 first) for lane l, whose dimension's v-digit value is d (from
-    /// `columns[l]`).
+    /// ORs into the `M` words of box K (`masks[K·M..K·M + M]`) the lane bits of points 0..n:
+    /// bit `l·lane + d` of the box's words (word-major bits, word 0 first) for lane l, whose
+    /// part's digits have value d (from `columns[l]`). K is the `parent` key (0 for the empty
+    /// shape), extended as [`extend_pow2`] does by `node`'s digits when given.
     fn set_lane_bits<const M: usize>(
         n: usize,
         masks: &mut [u64],
         parent: Option<&[u32]>,
+        node: Option<(&DigitColumn, u32)>,
         columns: &[DigitColumn],
         lane: u32,
     ) => set_lane_bits_portable
@@ -646,11 +723,13 @@ fn set_lane_bits_portable<const M: usize>(
     n: usize,
     masks: &mut [u64],
     parent: Option<&[u32]>,
+    node: Option<(&DigitColumn, u32)>,
     columns: &[DigitColumn],
     lane: u32,
 ) {
     // Word-major, so each column loop writes one contiguous word array (it vectorizes).
     let mut lanes = [[0u64; LANE_BLOCK]; M];
+    let mut node_keys = [0u32; LANE_BLOCK];
     for start in (0..n).step_by(LANE_BLOCK) {
         let end = (start + LANE_BLOCK).min(n);
         let len = end - start;
@@ -672,20 +751,24 @@ fn set_lane_bits_portable<const M: usize>(
                 }
             }
         }
-        match parent {
-            Some(parent) => {
-                for (i, &key) in parent[start..end].iter().enumerate() {
-                    let at = key as usize * M;
-                    let words = &mut masks[at..at + M];
-                    for (w, lane_words) in words.iter_mut().zip(&lanes) {
-                        *w |= lane_words[i];
-                    }
-                }
+        let keys = match (node, parent) {
+            (Some((column, shift)), _) => {
+                extend_pow2(parent, column, shift, start, &mut node_keys[..len]);
+                &node_keys[..len]
             }
-            None => {
+            (None, Some(parent)) => &parent[start..end],
+            (None, None) => {
                 for (w, lane_words) in masks[..M].iter_mut().zip(&lanes) {
                     *w |= lane_words[..len].iter().fold(0, |acc, &bits| acc | bits);
                 }
+                continue;
+            }
+        };
+        for (i, &key) in keys.iter().enumerate() {
+            let at = key as usize * M;
+            let words = &mut masks[at..at + M];
+            for (w, lane_words) in words.iter_mut().zip(&lanes) {
+                *w |= lane_words[i];
             }
         }
     }
@@ -693,7 +776,7 @@ fn set_lane_bits_portable<const M: usize>(
 
 #[cfg(test)]
 mod tests {
-    use super::{least_completion, Packing, Part, ShapeWalk, Walk, MAX_MASK_BYTES};
+    use super::{least_completion, NodeKeys, Packing, Part, ShapeWalk, Walk, MAX_MASK_BYTES};
     use crate::CheckBase;
     use gartowen_core::{PowerOfTwoBase, SplitMix64, Width};
     use gartowen_seq::faure::faure;
@@ -765,26 +848,29 @@ mod tests {
                     },
                     delegate: false,
                 };
-                // (parent keys, Σd of the parent, first dimension after it)
-                let mut parents = vec![(None, 0u32, 0usize)];
+                // (parent keys, Σd of the parent, first dimension after it, its part)
+                let mut parents = vec![(None, 0u32, 0usize, None)];
                 for p0 in 0..dims {
                     for sum in 1..m {
-                        parents.push((
-                            Some(walk.extend_all(None, Part::head(p0, sum))),
-                            sum,
-                            p0 + 1,
-                        ));
+                        let part = Part::head(p0, sum);
+                        parents.push((Some(walk.extend_all(None, part)), sum, p0 + 1, Some(part)));
                     }
                 }
-                for (keys, sum, next) in &parents {
+                for (keys, sum, next, part) in &parents {
                     let v = m - sum;
                     let leaves: Vec<Part> = (*next..dims).map(|p| Part::head(p, v)).collect();
                     let Some(plan) = walk.lanes(*sum, v, leaves.len()) else {
                         continue;
                     };
                     for group in leaves.chunks(plan.leaves) {
-                        let packed = walk.distinct_packed(keys.as_deref(), group, plan.words);
+                        let stored = NodeKeys::Stored(keys.as_deref());
+                        let packed = walk.distinct_packed(stored, group, plan.words);
                         assert_eq!(packed.len(), group.len());
+                        if let Some(part) = part {
+                            // The same keys built a block at a time from the root's.
+                            let extended = NodeKeys::Extended(None, *part);
+                            assert_eq!(walk.distinct_packed(extended, group, plan.words), packed);
+                        }
                         for (&part, &full) in group.iter().zip(&packed) {
                             let (p, own) = (part.dim, walk.distinct_keys(keys.as_deref(), part));
                             assert_eq!(full, own, "base {b} swaps {swaps} Σd {sum} dim {p}");
