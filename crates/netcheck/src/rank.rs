@@ -42,7 +42,7 @@ impl XorBasis {
 pub struct RowMatrices {
     q: u32,
     m: u32,
-    /// rows[j][r]: row r of the j-th selected matrix as a bit mask over columns (bit c = column c).
+    /// `rows[j][r]`: row r of the j-th selected matrix as a bit mask over columns (bit c = column c).
     rows: Vec<Vec<u64>>,
 }
 
