@@ -97,6 +97,26 @@ fn scramblers(c: &mut Criterion) {
             })
         });
     }
+    // Where the CPU picks another ART kernel (AVX-512 gathers), the portable one in the same
+    // run, so machines without AVX-512 can be read off this one.
+    if gartowen::art::BatchKernel::detect() != gartowen::art::BatchKernel::Portable {
+        for name in ["art-owen-2", "art-owen-16p"] {
+            let variant = gartowen::art::registry::variant_of(name).expect("an ART variant");
+            let symbols = gartowen::art::registry::DEFAULT_SYMBOLS;
+            let art = gartowen::art::ArtOwen::new(variant, symbols, 1)
+                .expect("the default alphabet")
+                .with_kernel(gartowen::art::BatchKernel::Portable)
+                .expect("the portable kernel runs everywhere");
+            let id = format!("{name} (portable kernel)");
+            group.bench_function(BenchmarkId::from_parameter(id), |b| {
+                b.iter(|| {
+                    buffer.copy_from_slice(&words32);
+                    gartowen::core::Scrambler::scramble_batch_u32(&art, &mut buffer, 3);
+                    black_box(buffer[WORDS - 1])
+                })
+            });
+        }
+    }
     group.finish();
 
     let mut group = c.benchmark_group("sequence_point_u32");
