@@ -1,6 +1,6 @@
 //! Unit tests of the walk's plan and passes against their single-leaf references.
 
-use super::{least_completion, NodeKeys, Packing, Part, ShapeWalk, Walk, MAX_MASK_BYTES};
+use super::{least_completion, ShapeWalk, Walk, MAX_MASK_BYTES};
 use crate::CheckBase;
 use gartowen_core::{PowerOfTwoBase, SplitMix64, Width};
 use gartowen_seq::faure::faure;
@@ -70,33 +70,25 @@ fn every_lane_of_a_packed_pass_agrees_with_its_own_bitmap_pass() {
                 } else {
                     Vec::new()
                 },
-                delegate: false,
             };
-            // (parent keys, Σd of the parent, first dimension after it, its part)
-            let mut parents = vec![(None, 0u32, 0usize, None)];
+            // (parent keys, Σd of the parent, first dimension after it)
+            let mut parents = vec![(None, 0u32, 0usize)];
             for p0 in 0..dims {
                 for sum in 1..m {
-                    let part = Part::head(p0, sum);
-                    parents.push((Some(walk.extend_all(None, part)), sum, p0 + 1, Some(part)));
+                    parents.push((Some(walk.extend_all(None, p0, sum)), sum, p0 + 1));
                 }
             }
-            for (keys, sum, next, part) in &parents {
+            for (keys, sum, next) in &parents {
                 let v = m - sum;
-                let leaves: Vec<Part> = (*next..dims).map(|p| Part::head(p, v)).collect();
-                let Some(plan) = walk.lanes(*sum, v, leaves.len()) else {
+                let Some(lanes) = walk.lanes(*sum, v) else {
                     continue;
                 };
-                for group in leaves.chunks(plan.leaves) {
-                    let stored = NodeKeys::Stored(keys.as_deref());
-                    let packed = walk.distinct_packed(stored, group, plan.words);
+                let leaves: Vec<usize> = (*next..dims).collect();
+                for group in leaves.chunks(lanes) {
+                    let packed = walk.distinct_packed(keys.as_deref(), group, v);
                     assert_eq!(packed.len(), group.len());
-                    if let Some(part) = part {
-                        // The same keys built a block at a time from the root's.
-                        let extended = NodeKeys::Extended(None, *part);
-                        assert_eq!(walk.distinct_packed(extended, group, plan.words), packed);
-                    }
-                    for (&part, &full) in group.iter().zip(&packed) {
-                        let (p, own) = (part.dim, walk.distinct_keys(keys.as_deref(), part));
+                    for (&p, &full) in group.iter().zip(&packed) {
+                        let own = walk.distinct_keys(keys.as_deref(), p, v);
                         assert_eq!(full, own, "base {b} swaps {swaps} Σd {sum} dim {p}");
                         assert!(swaps > 0 || full, "a net's lane is full");
                         lanes_checked += 1;
@@ -168,76 +160,50 @@ fn the_bit_passes_decide_every_shape_of_a_net_and_defer_the_rest() {
     }
 }
 
-/// A walk's plan, built by hand (no points are read).
-fn plan_walk<'a, 'b>(query: &'b ShapeWalk<'a>) -> Walk<'a, 'b> {
-    let mut walk = Walk {
-        query,
-        narrow: Vec::new(),
-        delegate: false,
-    };
-    walk.delegate = walk.delegates();
-    walk
-}
-
 #[test]
-fn leaves_share_box_words_exactly_when_their_lanes_fit() {
+fn leaves_share_a_word_exactly_when_their_lanes_fit() {
     let column = vec![0u32; 1];
     let prefix = [column.as_slice()];
-    let packing = |leaves, words| Some(Packing { leaves, words });
-    // Base 16: one-digit lanes are 16 bits, 4 per word; as few words as hold the leaves
-    // (a power of two, at most 8); two digits are 256 bits (no lane).
+    // Base 16: a one-digit lane is 16 bits (4 per word), two digits are 256 bits (none).
     let w16 = walk_of(&prefix, 16, 5);
-    let walk = plan_walk(&w16);
-    assert!(
-        walk.delegate,
-        "base 16, k = 5: one-digit lanes of 16^4 boxes fit"
-    );
-    assert_eq!(walk.lanes(4, 1, 1), packing(4, 1));
-    assert_eq!(walk.lanes(4, 1, 4), packing(4, 1));
-    assert_eq!(walk.lanes(4, 1, 5), packing(8, 2));
-    assert_eq!(walk.lanes(4, 1, 9), packing(16, 4));
-    assert_eq!(walk.lanes(4, 1, 16), packing(16, 4));
-    assert_eq!(walk.lanes(4, 1, 0), None);
-    assert_eq!(walk.lanes(3, 2, 4), None);
-    // 8 words (one cache line) at most: 16^3 boxes · 64 bytes fit, and 32 leaves.
-    assert_eq!(walk.lanes(3, 1, 40), packing(32, 8));
-    // The box words are capped by MAX_MASK_BYTES: 16^4 boxes take at most 8 words
-    // (4 MiB), 16^5 at most... none (8 MiB for one word).
-    assert_eq!((1usize << 16) * 8 * 8, MAX_MASK_BYTES);
-    assert_eq!(walk.lanes(4, 1, 40), packing(32, 8));
-    assert_eq!(walk.lanes(5, 1, 1), None);
+    let walk = Walk {
+        query: &w16,
+        narrow: Vec::new(),
+    };
+    assert_eq!(walk.lanes(4, 1), Some(4));
+    assert_eq!(walk.lanes(3, 2), None);
     // Base 2: 2-bit to 64-bit lanes; the words of 2^19 parent boxes fit, 2^20 do not.
     let w2 = walk_of(&prefix, 2, 21);
-    let walk = plan_walk(&w2);
-    assert!(
-        !walk.delegate,
-        "2^20 boxes of one word exceed MAX_MASK_BYTES"
-    );
-    assert_eq!(walk.lanes(5, 1, 32), packing(32, 1));
-    assert_eq!(walk.lanes(5, 1, 33), packing(64, 2));
-    assert_eq!(walk.lanes(5, 6, 1), packing(1, 1));
-    assert_eq!(walk.lanes(5, 6, 3), packing(4, 4));
-    assert_eq!(walk.lanes(5, 7, 1), None);
-    assert_eq!(walk.lanes(19, 1, 40), packing(32, 1));
-    assert_eq!(walk.lanes(18, 1, 40), packing(64, 2));
-    assert_eq!(walk.lanes(20, 1, 1), None);
-    assert!(plan_walk(&walk_of(&prefix, 2, 20)).delegate);
-    // Base 128: a one-digit lane is 128 bits, so no leaf is delegated.
-    assert!(!plan_walk(&walk_of(&prefix, 128, 3)).delegate);
-    assert!(plan_walk(&walk_of(&prefix, 64, 3)).delegate);
+    let walk = Walk {
+        query: &w2,
+        narrow: Vec::new(),
+    };
+    assert_eq!(walk.lanes(5, 1), Some(32));
+    assert_eq!(walk.lanes(5, 6), Some(1));
+    assert_eq!(walk.lanes(5, 7), None);
+    assert_eq!((1usize << 19) * 8, MAX_MASK_BYTES);
+    assert_eq!(walk.lanes(19, 1), Some(32));
+    assert_eq!(walk.lanes(20, 1), None);
     // Only t = 0 (one point per box) is decided by set bits.
     let t1 = ShapeWalk {
         t_count: 2,
         ..walk_of(&prefix, 16, 5)
     };
-    let walk = plan_walk(&t1);
-    assert_eq!(walk.lanes(4, 1, 4), None);
-    assert!(!walk.bit_pass() && !walk.delegate);
+    let walk = Walk {
+        query: &t1,
+        narrow: Vec::new(),
+    };
+    assert_eq!(walk.lanes(4, 1), None);
+    assert!(!walk.bit_pass());
     let prime = ShapeWalk {
         base: CheckBase::new(3).unwrap(),
         ..walk_of(&prefix, 16, 5)
     };
-    assert!(!plan_walk(&prime).bit_pass());
+    assert!(!Walk {
+        query: &prime,
+        narrow: Vec::new()
+    }
+    .bit_pass());
 }
 
 #[test]
