@@ -24,5 +24,5 @@ pub use gf2::Gf2Matrix;
 pub use hash::{derive_seed, hash_words, mix64, SplitMix64};
 pub use perm::{fisher_yates, Permutation};
 pub use registry::{BuildContext, Registry, ScramblerRequest, ScramblerSpec};
-pub use scrambler::{invert_nested, Identity, Scrambler};
+pub use scrambler::{invert_nested, Identity, Scrambler, U32_BATCH_CHUNK};
 pub use width::Width;

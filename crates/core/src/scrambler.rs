@@ -64,11 +64,12 @@ pub trait Scrambler: Send + Sync {
     }
 
     /// Scrambles 32-bit `words` in place for dimension `dim` (width 32); equal to
-    /// [`Scrambler::scramble_u32`] on each word. The default widens chunks of 256 words on the
-    /// stack and calls [`Scrambler::scramble_batch`], so every batch override serves it.
+    /// [`Scrambler::scramble_u32`] on each word. The default widens chunks of
+    /// [`U32_BATCH_CHUNK`] words on the stack and calls [`Scrambler::scramble_batch`], so
+    /// every batch override serves it.
     fn scramble_batch_u32(&self, words: &mut [u32], dim: u32) {
-        let mut wide = [0u64; 256];
-        for chunk in words.chunks_mut(256) {
+        let mut wide = [0u64; U32_BATCH_CHUNK];
+        for chunk in words.chunks_mut(U32_BATCH_CHUNK) {
             let wide = &mut wide[..chunk.len()];
             for (w, &x) in wide.iter_mut().zip(chunk.iter()) {
                 *w = x as u64;
@@ -90,6 +91,11 @@ pub trait Scrambler: Send + Sync {
         word_to_f64(self.scramble(x, width, dim), width)
     }
 }
+
+/// Words per chunk of the default [`Scrambler::scramble_batch_u32`] (3 KiB of stack): a
+/// multiple of 48, 16 and 8, so the batch kernels' blocks (ART's AVX-512 blocks are 48 words)
+/// divide every whole chunk and only the slice's last chunk leaves a remainder.
+pub const U32_BATCH_CHUNK: usize = 384;
 
 /// The identity map: the "unscrambled" reference. It is trivially a nested scramble (every
 /// node permutation is the identity) but of course not a uniform one.

@@ -130,6 +130,11 @@ pub struct ArtOwen {
     /// 32 bits of the step's contribution (see [`batch`]) above the next symbol. Empty when
     /// the alphabet has more than 2^16 symbols.
     batch_table: Vec<u64>,
+    /// The batch table's steps after the first as 32-bit entries (see [`batch::narrow`]);
+    /// empty unless the symbols fit in a step's bits.
+    batch_narrow: Vec<u32>,
+    /// The top 32 bits of each symbol's code, for the narrow kernel's tail digit.
+    codes_top: Vec<u32>,
     /// The code that walks the batch path's lanes.
     kernel: BatchKernel,
     /// Root symbols and shifts of dimensions 0..CACHED_ROOTS.
@@ -191,6 +196,8 @@ impl ArtOwen {
             step_carry: Vec::new(),
             batch_digits: 1,
             batch_table: Vec::new(),
+            batch_narrow: Vec::new(),
+            codes_top: Vec::new(),
             kernel: BatchKernel::detect(),
             dims: Vec::new(),
             mutant,
@@ -212,6 +219,17 @@ impl ArtOwen {
                     && art.codes.len() == symbols as usize
                     && art.batch_table.iter().all(|e| e & 0xFFFF < symbols),
                 "batch table out of shape"
+            );
+            art.batch_narrow = batch::narrow(&art.batch_table, step_bits, symbols);
+            art.codes_top = art.codes.iter().map(|&c| (c >> 32) as u32).collect();
+            assert!(
+                art.batch_narrow.is_empty()
+                    || (art.batch_narrow.len() == art.batch_table.len()
+                        && art
+                            .batch_narrow
+                            .iter()
+                            .all(|&e| u64::from(e) & ((1 << step_bits) - 1) < symbols)),
+                "narrow table out of shape"
             );
         }
         Ok(art)
@@ -541,6 +559,8 @@ impl Scrambler for ArtOwen {
             + self.step_local.len() * 2
             + self.step_carry.len() * 8
             + self.batch_table.len() * 8
+            + self.batch_narrow.len() * 4
+            + self.codes_top.len() * 4
     }
 
     /// Interleaved chains through the step table (bit-identical to [`Scrambler::scramble`]).
