@@ -99,17 +99,22 @@ fn scramblers(c: &mut Criterion) {
             })
         });
     }
-    // Where the CPU picks another ART kernel (AVX-512 gathers), the portable one in the same
-    // run, so machines without AVX-512 can be read off this one.
-    if gartowen::art::BatchKernel::detect() != gartowen::art::BatchKernel::Portable {
+    // The ART kernels the CPU runs besides the one it picks (the portable one and the 64-bit
+    // gather kernel on an AVX-512 machine), in the same run, so machines without AVX-512 can
+    // be read off this one and each kernel's gain is a ratio.
+    let others: Vec<_> = gartowen::art::BatchKernel::available()
+        .into_iter()
+        .filter(|&k| k != gartowen::art::BatchKernel::detect())
+        .collect();
+    for kernel in others {
         for name in ["art-owen-2", "art-owen-16p"] {
             let variant = gartowen::art::registry::variant_of(name).expect("an ART variant");
             let symbols = gartowen::art::registry::DEFAULT_SYMBOLS;
             let art = gartowen::art::ArtOwen::new(variant, symbols, SEED)
                 .expect("the default alphabet")
-                .with_kernel(gartowen::art::BatchKernel::Portable)
-                .expect("the portable kernel runs everywhere");
-            let id = format!("{name} (portable kernel)");
+                .with_kernel(kernel)
+                .expect("an available kernel");
+            let id = format!("{name} ({kernel:?} kernel)");
             group.bench_function(BenchmarkId::from_parameter(id), |b| {
                 b.iter(|| {
                     buffer.copy_from_slice(&words32);
