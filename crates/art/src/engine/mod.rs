@@ -133,7 +133,8 @@ pub struct ArtOwen {
     /// The batch table's steps after the first as 32-bit entries (see [`batch::narrow`]);
     /// empty unless the symbols fit in a step's bits.
     batch_narrow: Vec<u32>,
-    /// The top 32 bits of each symbol's code, for the narrow kernel's tail digit.
+    /// The top 32 bits of each symbol's code, for the narrow kernel's tail digit (empty
+    /// with the narrow table).
     codes_top: Vec<u32>,
     /// The code that walks the batch path's lanes.
     kernel: BatchKernel,
@@ -221,10 +222,13 @@ impl ArtOwen {
                 "batch table out of shape"
             );
             art.batch_narrow = batch::narrow(&art.batch_table, step_bits, symbols);
-            art.codes_top = art.codes.iter().map(|&c| (c >> 32) as u32).collect();
+            if !art.batch_narrow.is_empty() {
+                art.codes_top = art.codes.iter().map(|&c| (c >> 32) as u32).collect();
+            }
             assert!(
                 art.batch_narrow.is_empty()
                     || (art.batch_narrow.len() == art.batch_table.len()
+                        && art.codes_top.len() == art.codes.len()
                         && art
                             .batch_narrow
                             .iter()
