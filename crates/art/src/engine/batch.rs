@@ -114,15 +114,16 @@ pub(super) fn walk_portable<const SB: u32>(
 /// they differ in speed only.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum BatchKernel {
-    /// Plain Rust, [`LANES`] chains interleaved (every platform).
+    /// Plain Rust, eight chains interleaved (every platform).
     Portable,
     /// AVX-512F gathers of the 64-bit table entries: one instruction loads a step's entries
     /// for eight lanes (x86-64 CPUs that report AVX-512F at run time).
     Avx512,
     /// AVX-512F with sixteen 32-bit lanes per register: step 0 gathers the root's row of the
-    /// 64-bit table, the later steps the narrow table of 32-bit entries (half the bytes; see
-    /// [`narrow`]). Where the alphabet does not fit in a step's bits there is no narrow
-    /// table and this kernel runs [`BatchKernel::Avx512`].
+    /// 64-bit table, the later steps a narrow table of 32-bit entries (half the bytes; the
+    /// layout is argued beside `narrow` in `engine/batch.rs`). Where the alphabet does not
+    /// fit in a step's bits there is no narrow table and this kernel runs
+    /// [`BatchKernel::Avx512`].
     Avx512Narrow,
 }
 
