@@ -185,29 +185,34 @@ fn step_table_path_equals_the_digit_by_digit_loop() {
 
 #[test]
 fn table_bytes_count_every_table() {
-    // The count the speed reports print, against the layout worked out by hand for a
-    // translation-only variant (no ψ tables), q = 4: codes (8 B per symbol), scalar step
-    // tables of one digit (next 4 B, local 2 B, carry 8 B per entry), the batch table of two
-    // digits (8 B), and, when the symbols fit in its 8 bits, the narrow table (4 B) with the
-    // codes' top halves (4 B per symbol). 1024 symbols overflow the batch budget at two
-    // digits, so their batch step is one digit (4 bits) and there is no narrow table.
-    let variant = gartowen_art::registry::variant_of("art-owen-t4").unwrap();
-    for (symbols, batch_bits, narrow) in [(256usize, 8u32, true), (1024, 4, false)] {
-        let art = ArtOwen::new(variant, symbols, 1).unwrap();
-        let n = art.grammar().symbols() as usize;
-        assert_eq!(n, symbols);
-        assert_eq!(art.batch_step_bits(), batch_bits);
-        assert_eq!(art.has_narrow_table(), narrow);
-        let narrow_bytes = if narrow {
-            (n << batch_bits) * 4 + n * 4
-        } else {
-            0
-        };
-        let expected = art.grammar().table_bytes()
-            + n * 8
-            + (n << 4) * (4 + 2 + 8)
-            + (n << batch_bits) * 8
-            + narrow_bytes;
-        assert_eq!(art.table_bytes(), expected, "{symbols} symbols");
+    // The count the speed reports print, against the layout worked out by hand for q = 4:
+    // codes (8 B per symbol), ψ and ψ^{-1} images (one byte per symbol and digit, only for
+    // variants with ψ), scalar step tables of one digit (next 4 B, local 2 B, carry 8 B per
+    // entry), the batch table of two digits (8 B), and, when the symbols fit in its 8 bits,
+    // the narrow table (4 B) with the codes' top halves (4 B per symbol). 1024 symbols
+    // overflow the batch budget at two digits, so their batch step is one digit (4 bits) and
+    // there is no narrow table.
+    for (name, psi) in [("art-owen-t4", false), ("art-owen-m4", true)] {
+        let variant = gartowen_art::registry::variant_of(name).unwrap();
+        for (symbols, batch_bits, narrow) in [(256usize, 8u32, true), (1024, 4, false)] {
+            let art = ArtOwen::new(variant, symbols, 1).unwrap();
+            let n = art.grammar().symbols() as usize;
+            assert_eq!(n, symbols);
+            assert_eq!(art.batch_step_bits(), batch_bits);
+            assert_eq!(art.has_narrow_table(), narrow);
+            let psi_bytes = if psi { 2 * (n << 4) } else { 0 };
+            let narrow_bytes = if narrow {
+                (n << batch_bits) * 4 + n * 4
+            } else {
+                0
+            };
+            let expected = art.grammar().table_bytes()
+                + n * 8
+                + psi_bytes
+                + (n << 4) * (4 + 2 + 8)
+                + (n << batch_bits) * 8
+                + narrow_bytes;
+            assert_eq!(art.table_bytes(), expected, "{name} with {symbols} symbols");
+        }
     }
 }

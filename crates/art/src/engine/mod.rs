@@ -553,7 +553,8 @@ impl Scrambler for ArtOwen {
         self.run(y, width, dim, true)
     }
 
-    /// Everything held: child table, codes, ψ and ψ^{-1} images, and the step table.
+    /// Everything held, in bytes: child table, codes, ψ and ψ^{-1} images, the scalar step
+    /// tables, the batch table and the narrow table with the codes' top halves.
     fn table_bytes(&self) -> usize {
         self.grammar.table_bytes()
             + self.codes.len() * 8
