@@ -52,11 +52,53 @@ pub fn registry_listing() -> Result<Vec<serde_json::Value>, gartowen_core::CoreE
                 default_base: spec.default_base,
             };
             let s = (spec.build)(&gartowen_core::ScramblerRequest::parse(spec.name)?, &ctx)?;
-            Ok(serde_json::json!({
+            let mut row = serde_json::json!({
                 "name": spec.name, "base": s.base().base(), "table_bytes": s.table_bytes(),
                 "claims_nested_uniform": spec.claim.is_owen(), "claim": spec.claim.to_string(),
                 "summary": spec.summary,
-            }))
+            });
+            if let Some(memory) = art_memory(spec.name) {
+                row.as_object_mut()
+                    .expect("an object")
+                    .extend(memory.as_object().expect("an object").clone());
+            }
+            Ok(row)
         })
         .collect()
+}
+
+/// An ART variant's memory in the default configuration (256 symbols, seed 0), as `gartowen
+/// list --json` adds it: the record a renderer ships (bytes for 32- and 64-bit words, bytes per
+/// symbol for 32-bit words), the shared child table, the acceleration tables derived from the
+/// record, and, where the generalized paper states one, its ratio of record sizes to Q-ART's
+/// beside the measured one. `None` for names that are not ART variants.
+pub fn art_memory(name: &str) -> Option<serde_json::Value> {
+    use gartowen_art::record::PAPER_RECORD_RATIOS;
+    let variant = gartowen_art::registry::variant_of(name)?;
+    let symbols = gartowen_art::registry::DEFAULT_SYMBOLS;
+    let art = gartowen_art::ArtOwen::new(variant, symbols, 0).expect("the default table builds");
+    let record = art.record(gartowen_core::Width::W32);
+    let mut out = serde_json::json!({
+        "symbols": symbols,
+        "record_bytes": record.bytes(),
+        "record_bytes_64": art.record(gartowen_core::Width::W64).bytes(),
+        "record_bytes_per_symbol": record.bytes_per_symbol(),
+        "child_table_bytes": art.grammar().table_bytes(),
+        "acceleration_bytes": art.acceleration_bytes(),
+    });
+    if let Some((_, paper, quote)) = PAPER_RECORD_RATIOS.iter().find(|(n, _, _)| *n == name) {
+        let q_art = gartowen_art::ArtOwen::new(gartowen_art::ArtVariant::QArt4, symbols, 0)
+            .expect("the default table builds")
+            .record(gartowen_core::Width::W32)
+            .bytes();
+        let extra = serde_json::json!({
+            "record_ratio_to_q_art_4": record.bytes() as f64 / q_art as f64,
+            "paper_ratio_to_q_art_4": paper,
+            "paper_says": quote,
+        });
+        out.as_object_mut()
+            .expect("an object")
+            .extend(extra.as_object().expect("an object").clone());
+    }
+    Some(out)
 }

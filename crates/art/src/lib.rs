@@ -5,12 +5,15 @@
 //! This is gartowen's reconstruction from the papers' text, frozen by golden vectors; it is not
 //! the authors' code.
 
+mod dims;
 pub mod engine;
 pub mod grammar;
 pub mod peers;
+pub mod record;
 pub mod registry;
 pub mod variants;
 
 pub use engine::{ArtMutant, ArtOwen, BatchKernel, BATCH_TABLE_BYTES};
 pub use grammar::Grammar;
+pub use record::ArtRecord;
 pub use variants::ArtVariant;

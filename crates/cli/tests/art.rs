@@ -126,3 +126,44 @@ fn table_option_and_its_errors() {
     ]);
     assert_eq!(o.status.code(), Some(2), "lk-hash has no 64-bit form");
 }
+
+#[test]
+fn list_reports_each_art_records_size_beside_the_papers_ratios() {
+    let out = gartowen(&["list", "--json"]);
+    let list: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let row = |name: &str| {
+        list.as_array()
+            .unwrap()
+            .iter()
+            .find(|e| e["name"] == name)
+            .unwrap()
+            .clone()
+    };
+    let bytes = |name: &str| row(name)["record_bytes"].as_u64().unwrap();
+    // Hand-worked 256-symbol layouts (crates/art/src/record.rs): 32-bit code, + 3-bit index,
+    // one 32-bit word, 64-bit permutation + 32-bit code.
+    assert_eq!(bytes("art-owen-2"), 1024);
+    assert_eq!(bytes("q-art-4"), 1120);
+    assert_eq!(bytes("art-owen-8p"), 1024);
+    assert_eq!(bytes("art-owen-16p"), 3072);
+    let m8 = row("art-owen-m8");
+    assert!(m8["record_bytes_64"].as_u64().unwrap() <= 16 * 256);
+    assert_eq!(
+        m8["table_bytes"].as_u64().unwrap(),
+        m8["child_table_bytes"].as_u64().unwrap() + m8["acceleration_bytes"].as_u64().unwrap()
+    );
+    let r16 = row("art-owen-16p");
+    assert_eq!(r16["paper_ratio_to_q_art_4"], 3.0);
+    assert!((r16["record_ratio_to_q_art_4"].as_f64().unwrap() - 3072.0 / 1120.0).abs() < 1e-12);
+    assert!(row("lk-hash").get("record_bytes").is_none());
+    // The text table prints the ratios beside the paper's.
+    let text = String::from_utf8(gartowen(&["list"]).stdout).unwrap();
+    assert!(
+        text.contains("art-owen-8p / q-art-4 record = 0.91 (the paper: about 1"),
+        "{text}"
+    );
+    assert!(
+        text.contains("art-owen-16p / q-art-4 record = 2.74 (the paper: about 3"),
+        "{text}"
+    );
+}

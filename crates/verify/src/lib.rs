@@ -16,6 +16,7 @@
 pub mod battery;
 pub mod certificate;
 pub mod dimensions;
+pub mod equivalence;
 pub mod external;
 pub mod external_pool;
 pub mod joint;

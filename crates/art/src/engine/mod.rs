@@ -36,15 +36,10 @@ mod simd;
 
 pub use batch::{BatchKernel, BATCH_TABLE_BYTES};
 
+use crate::dims::{dimension_key, root_symbol, DimKey};
+use crate::record::ArtRecord;
 use crate::{ArtVariant, Grammar};
-use gartowen_core::{
-    derive_seed, hash_words, DigitLayout, Permutation, PowerOfTwoBase, Scrambler, SplitMix64, Width,
-};
-
-/// Tag for the table stream (`derive_seed(seed, TABLE_TAG)`).
-const TABLE_TAG: u64 = 0x0074_6162_6c65; // "table"
-/// Tag for root selection (`hash_words([seed, dim, ROOT_TAG])`).
-const ROOT_TAG: u64 = 0x726f_6f74; // "root"
+use gartowen_core::{DigitLayout, Permutation, PowerOfTwoBase, Scrambler, Width};
 
 /// Precomputed effect of `digits` consecutive digits (one step) from a symbol.
 #[derive(Debug, Clone, Copy, Default)]
@@ -56,9 +51,6 @@ struct Step {
     /// Output bits of the step before ancestors' translations: ψ(v_i) ⊕ in-step codes.
     local: u32,
 }
-
-/// Tag for the dimension shifts (`hash_words([seed, dim, SHIFT_TAG])`).
-const SHIFT_TAG: u64 = 0x0073_6869_6674; // "shift"
 
 /// Number of dimensions whose root symbol and shifts are precomputed.
 const CACHED_ROOTS: u32 = 256;
@@ -84,24 +76,6 @@ pub enum ArtMutant {
     /// The partial tail digit gets no translation (scalar paths only): the flipped tail rule
     /// the extracted differential test must catch.
     TailUntranslated,
-}
-
-/// A 32-bit bijection (murmur3's finalizer): distinct inputs give distinct outputs.
-#[inline]
-fn mix32(mut x: u32) -> u32 {
-    x ^= x >> 16;
-    x = x.wrapping_mul(0x85eb_ca6b);
-    x ^= x >> 13;
-    x = x.wrapping_mul(0xc2b2_ae35);
-    x ^ (x >> 16)
-}
-
-/// Per-dimension constants: root symbol, input shift A and output shift D (top-aligned).
-#[derive(Debug, Clone, Copy, Default)]
-struct DimKey {
-    root: u32,
-    input_shift: u64,
-    output_shift: u64,
 }
 
 /// An ART-Owen scrambler: grammar, per-symbol ψ and codes, and the seed that chose them.
@@ -161,16 +135,15 @@ impl ArtOwen {
         seed: u64,
         mutant: ArtMutant,
     ) -> Result<Self, crate::grammar::GrammarError> {
-        let len = crate::grammar::length_for_size(symbols)?;
-        let grammar = Grammar::shared(len, variant.q())?;
-        let mut rng = SplitMix64::new(derive_seed(seed, TABLE_TAG));
+        // The record (64-bit words) is the table; everything else is derived from it.
+        let record = ArtRecord::draw(variant, symbols, seed, Width::W64)?;
+        let grammar = record.grammar().clone();
         let b = 1usize << variant.q();
         let mut codes = Vec::with_capacity(symbols);
         let (mut psi, mut psi_inv) = (Vec::new(), Vec::new());
-        for _ in 0..grammar.symbols() {
-            let (p, code) = variant.draw_symbol(&mut rng);
-            codes.push(code);
-            if let Some(p) = p {
+        for s in 0..grammar.symbols() {
+            codes.push(record.code(s));
+            if let Some(p) = record.psi(s) {
                 psi.extend_from_slice(p.as_slice());
                 let inv = p.inverse();
                 psi_inv.extend_from_slice(&inv.as_slice()[..b]);
@@ -294,6 +267,24 @@ impl ArtOwen {
         &self.grammar
     }
 
+    /// The record of this table for `width`-bit words: the per-symbol data a renderer must
+    /// store or ship, in the paper's layouts ([`ArtRecord`]; a mutant's defects are not in it).
+    pub fn record(&self, width: Width) -> ArtRecord {
+        ArtRecord::draw(
+            self.variant,
+            self.grammar.symbols() as usize,
+            self.seed,
+            width,
+        )
+        .expect("the table's own alphabet size")
+    }
+
+    /// Bytes of the acceleration tables, all derived from the record at construction:
+    /// everything [`Scrambler::table_bytes`] counts except the shared child table.
+    pub fn acceleration_bytes(&self) -> usize {
+        self.table_bytes() - self.grammar.table_bytes()
+    }
+
     /// The root symbol of dimension `dim`: hash of (seed, dim) reduced without bias.
     #[inline]
     pub fn root(&self, dim: u32) -> u32 {
@@ -311,27 +302,14 @@ impl ArtOwen {
     #[cold]
     #[inline(never)]
     fn hashed_dim(&self, dim: u32) -> DimKey {
-        let root = SplitMix64::new(hash_words(&[self.seed, dim as u64, ROOT_TAG]))
-            .bounded(self.grammar.symbols());
+        let symbols = self.grammar.symbols();
         match self.mutant {
             ArtMutant::OneRoot => DimKey::default(),
             ArtMutant::RootOnlyDimensions => DimKey {
-                root,
+                root: root_symbol(self.seed, dim, symbols),
                 ..DimKey::default()
             },
-            _ => {
-                let mut rng = SplitMix64::new(hash_words(&[self.seed, dim as u64, SHIFT_TAG]));
-                let input_shift = rng.next_u64();
-                // Top half: a bijection of dim keyed by the seed alone (a per-dimension key
-                // would break the bijection), so output shifts never repeat.
-                let key = hash_words(&[self.seed, SHIFT_TAG]) as u32;
-                let output_shift = ((mix32(dim ^ key) as u64) << 32) | rng.next_u32() as u64;
-                DimKey {
-                    root,
-                    input_shift,
-                    output_shift,
-                }
-            }
+            _ => dimension_key(self.seed, dim, symbols),
         }
     }
 
@@ -586,20 +564,13 @@ mod tests {
     use super::*;
 
     #[test]
-    fn mix32_is_injective_and_output_shifts_never_repeat() {
-        // The distinctness of dimensions rests on mix32 being a bijection: no collision on
-        // 2^20 inputs (a broken mixer collides within a few thousand), and the top halves of
-        // the output shifts of 65,536 dimensions are distinct for a seed.
-        let mut seen = std::collections::HashSet::new();
-        assert!((0..1u32 << 20).all(|x| seen.insert(mix32(x))));
+    fn the_dimension_mutants_really_drop_the_shifts() {
         let art = ArtOwen::new(ArtVariant::ArtOwen2, 44, 9).unwrap();
-        let mut tops = std::collections::HashSet::new();
-        assert!((0..1u32 << 16).all(|d| tops.insert(art.dim_key(d).output_shift >> 32)));
-        // The mutants that drop the shifts really drop them.
         let old = ArtOwen::with_mutant(ArtVariant::ArtOwen2, 44, 9, ArtMutant::RootOnlyDimensions)
             .unwrap();
         assert_eq!(old.dim_key(300).output_shift, 0);
         assert_eq!(old.dim_key(300).root, art.dim_key(300).root);
-        assert_ne!(art.dim_key(300).input_shift, 0);
+        assert_eq!(art.dim_key(300), dimension_key(9, 300, 44));
+        assert_eq!(art.dim_key(3), dimension_key(9, 3, 44));
     }
 }

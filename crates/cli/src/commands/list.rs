@@ -28,19 +28,47 @@ pub fn run(a: ListArgs) -> Result<ExitCode, CliError> {
     } else {
         writeln!(
             out,
-            "{:<22} {:>5} {:>12}  {:<24} summary",
-            "name", "base", "table_bytes", "claim"
+            "{:<22} {:>5} {:>12} {:>9} {:>8}  {:<24} summary",
+            "name", "base", "table_bytes", "record_B", "B/symbol", "claim"
         )
         .map_err(io_err)?;
         for r in &rows {
+            let record = r["record_bytes"]
+                .as_u64()
+                .map_or(String::new(), |b| b.to_string());
+            let per_symbol = r["record_bytes_per_symbol"]
+                .as_f64()
+                .map_or(String::new(), |b| format!("{b:.3}"));
             writeln!(
                 out,
-                "{:<22} {:>5} {:>12}  {:<24} {}",
+                "{:<22} {:>5} {:>12} {:>9} {:>8}  {:<24} {}",
                 r["name"].as_str().unwrap_or_default(),
                 r["base"].as_u64().unwrap_or_default(),
                 r["table_bytes"].as_u64().unwrap_or_default(),
+                record,
+                per_symbol,
                 r["claim"].as_str().unwrap_or_default(),
                 r["summary"].as_str().unwrap_or_default()
+            )
+            .map_err(io_err)?;
+        }
+        writeln!(
+            out,
+            "\nrecord_B: what a renderer ships for 32-bit words (256 symbols, packed; the child \
+             table is shared and static); table_bytes adds the acceleration tables."
+        )
+        .map_err(io_err)?;
+        for r in rows
+            .iter()
+            .filter(|r| r.get("paper_ratio_to_q_art_4").is_some())
+        {
+            writeln!(
+                out,
+                "{} / q-art-4 record = {:.2} (the paper: about {}, \"{}\")",
+                r["name"].as_str().unwrap_or_default(),
+                r["record_ratio_to_q_art_4"].as_f64().unwrap_or_default(),
+                r["paper_ratio_to_q_art_4"].as_f64().unwrap_or_default(),
+                r["paper_says"].as_str().unwrap_or_default()
             )
             .map_err(io_err)?;
         }
