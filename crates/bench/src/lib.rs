@@ -1,6 +1,8 @@
 //! Speed against error: integrands with exact integrals, the RMSE harness over every sequence
 //! and scrambler, point-set spectra, and the `gartowen report` figures and tables.
 
+pub mod curves;
+pub mod equivalence;
 pub mod fidelity;
 pub mod figures;
 pub mod harness;
@@ -8,3 +10,4 @@ pub mod integrands;
 pub mod report;
 pub mod spectrum;
 pub mod speed;
+pub mod tradeoff;

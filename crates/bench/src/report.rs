@@ -5,6 +5,8 @@
 //! stored both as ns per coordinate and as a ratio to the `lk-hash` peer measured in the same
 //! run; baselines compare only the ratios.
 
+use crate::curves::sz16_words;
+pub use crate::curves::{curve_seeds, discrepancy_curves, DiscrepancyCurve};
 use crate::figures::{
     loglog_lines, loglog_lines_banded, loglog_points, pair_matrix, panel_grid, FigureError, Panel,
     Series,
@@ -13,8 +15,8 @@ use crate::harness::{methods_for, run_method, HarnessConfig, HarnessError, Metho
 use crate::integrands::{standard_families, Family, Smoothness};
 use crate::spectrum::power_spectrum;
 pub use crate::speed::{measure_speed, SpeedRow};
-use gartowen::core::{BuildContext, Registry, Width};
-use gartowen::discrepancy::{curves, Kind};
+use gartowen::core::Registry;
+use gartowen::discrepancy::expected::expected_l2star_random;
 use gartowen::seq::SequenceKind;
 use gartowen::verify::{verify, Level, Verdict};
 use serde::{Deserialize, Serialize};
@@ -67,45 +69,6 @@ pub struct SlopeRow {
     pub meets: bool,
 }
 
-/// Figure 2 data: mean L2-star D² of sz16 against N, jointly in 16-D and for pairs (0, j).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct DiscrepancyCurve {
-    /// Scrambler request.
-    pub scrambler: String,
-    /// Sizes.
-    pub n: Vec<usize>,
-    /// Mean joint D².
-    pub joint: Vec<f64>,
-    /// Pairs.
-    pub pairs: Vec<[usize; 2]>,
-    /// Mean 2-D D² per size, per pair.
-    pub pair_values: Vec<Vec<f64>>,
-    /// Seeds averaged per point.
-    #[serde(default)]
-    pub seeds: usize,
-    /// Standard error of each mean joint D² (empty in reports written before it existed).
-    #[serde(default)]
-    pub joint_se: Vec<f64>,
-    /// Standard error of each mean pair D², per size, per pair.
-    #[serde(default)]
-    pub pair_se: Vec<Vec<f64>>,
-}
-
-impl DiscrepancyCurve {
-    /// max over pairs / min over pairs of the mean 2-D D², per size: 1 when every pair is as
-    /// good as every other (the paper's "consistent quality" in one number per N).
-    pub fn pair_spread(&self) -> Vec<f64> {
-        self.pair_values
-            .iter()
-            .map(|v| {
-                let max = v.iter().copied().fold(f64::MIN, f64::max);
-                let min = v.iter().copied().fold(f64::MAX, f64::min);
-                max / min
-            })
-            .collect()
-    }
-}
-
 /// Noise thresholds the baseline comparison uses (stated in the report).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Thresholds {
@@ -156,6 +119,13 @@ pub struct Report {
     /// written before it existed).
     #[serde(default)]
     pub owen_variance: Vec<crate::fidelity::VarianceRow>,
+    /// The paper's memory/speed trade-off, per ART variant (empty in older reports).
+    #[serde(default)]
+    pub tradeoff: Vec<crate::tradeoff::TradeoffRow>,
+    /// Equivalence verdicts of every ART variant against Owen in its base (empty in older
+    /// reports).
+    #[serde(default)]
+    pub equivalence: Vec<crate::equivalence::EquivalenceRow>,
     /// Baseline thresholds.
     pub thresholds: Thresholds,
     /// Worker threads used.
@@ -208,6 +178,9 @@ pub struct ReportConfig {
     pub quick: bool,
     /// Master seed.
     pub seed: u64,
+    /// The equivalence margin δ on ratios (0 < δ < 1; default
+    /// [`gartowen::battery::equivalence::DEFAULT_MARGIN`]).
+    pub margin: f64,
 }
 
 /// The randomization-quality table from the verify battery at quick level, one row per
@@ -233,63 +206,6 @@ pub fn measure_quality(registry: &Registry, requests: &[String]) -> Vec<QualityR
             }
         })
         .collect()
-}
-
-/// Row-major words of the first `dims` dimensions of sz16, scrambled by `request` with `seed`.
-fn sz16_words(registry: &Registry, request: &str, dims: usize, n: usize, seed: u64) -> Vec<u64> {
-    let seq = SequenceKind::Sz16.build(dims, Width::W32).expect("sz16");
-    let s = registry
-        .build_with(
-            request,
-            &BuildContext {
-                seed,
-                default_base: SequenceKind::Sz16.base(),
-            },
-        )
-        .expect("registry entry");
-    (0..n as u64)
-        .flat_map(|i| (0..dims).map(move |j| (i, j)))
-        .map(|(i, j)| s.scramble(seq.point(i, j), Width::W32, j as u32))
-        .collect()
-}
-
-/// Figure 2 data for binary against base-16 scrambling of sz16.
-pub fn discrepancy_curves(registry: &Registry, quick: bool) -> Vec<DiscrepancyCurve> {
-    let max_log2 = if quick { 9 } else { 12 };
-    let sizes: Vec<usize> = (4..=max_log2).map(|k| 1usize << k).collect();
-    // Means of a heavy-tailed statistic: 16 seeds (quick) or 64 (full), with standard errors.
-    let seeds: Vec<u64> = (0..if quick { 16 } else { 64 }).collect();
-    let pairs = curves::pair_list(16, false);
-    [
-        "art-owen-2",
-        "art-owen-16p",
-        "owen-oracle:base=2",
-        "owen-oracle:base=16",
-    ]
-    .iter()
-    .filter(|r| !quick || !r.starts_with("owen-oracle"))
-    .map(|request| {
-        let c = curves::curve(
-            Kind::L2Star,
-            16,
-            Width::W32,
-            &sizes,
-            &seeds,
-            &pairs,
-            &|seed, n| sz16_words(registry, request, 16, n, seed),
-        );
-        DiscrepancyCurve {
-            scrambler: request.to_string(),
-            n: c.points.iter().map(|p| p.n).collect(),
-            joint: c.points.iter().map(|p| p.joint).collect(),
-            pairs: c.pairs.clone(),
-            pair_values: c.points.iter().map(|p| p.pairs.clone()).collect(),
-            seeds: seeds.len(),
-            joint_se: c.points.iter().map(|p| p.joint_se).collect(),
-            pair_se: c.points.iter().map(|p| p.pairs_se.clone()).collect(),
-        }
-    })
-    .collect()
 }
 
 fn expected_slope(s: Smoothness) -> Option<f64> {
@@ -395,6 +311,13 @@ pub fn build_report(
         &with_base,
         if config.quick { 200 } else { 1000 },
     );
+    let tradeoff = crate::tradeoff::measure_tradeoff(config.quick);
+    let equivalence = crate::equivalence::equivalence_rows(
+        &owen_variance,
+        &discrepancy,
+        config.margin,
+        gartowen::battery::equivalence::DEFAULT_ALPHA,
+    );
     let slopes = slope_rows(&results, &families);
     Ok(Report {
         schema: REPORT_SCHEMA.into(),
@@ -415,6 +338,8 @@ pub fn build_report(
         quality,
         discrepancy,
         owen_variance,
+        tradeoff,
+        equivalence,
         threads: rayon::current_num_threads(),
         seconds: start.elapsed().as_secs_f64(),
     })
@@ -691,7 +616,7 @@ pub fn write_figures(
         files.push(name);
     }
     // Figure 2: joint 16-D and pair curves.
-    let joint: Vec<Series> = report
+    let mut joint: Vec<Series> = report
         .discrepancy
         .iter()
         .map(|c| Series {
@@ -704,9 +629,23 @@ pub fn write_figures(
                 .collect(),
         })
         .collect();
+    // The paper's baseline: independent uniform points, by their exact expectation.
+    let random = |dims: u32| Series {
+        label: "random points (exact E[D²])".into(),
+        points: report
+            .discrepancy
+            .iter()
+            .max_by_key(|c| c.n.len())
+            .map_or(Vec::new(), |c| {
+                c.n.iter()
+                    .map(|&n| (n as f64, expected_l2star_random(n, dims)))
+                    .collect()
+            }),
+    };
+    joint.push(random(16));
     loglog_lines(
         &dir.join("figure2_joint.png"),
-        "Figure 2a: mean L2-star D², sz16 in 16-D: binary vs base-16 scrambling",
+        "Figure 2a: mean L2-star D², sz16 in 16-D: ART against full-tree Owen of its base",
         "N (points)",
         "mean D²",
         &joint,
@@ -739,12 +678,17 @@ pub fn write_figures(
                 points: mean,
             });
         }
+        let base = random(2);
+        bands.push(base.points.iter().map(|&(_, m)| (m, m)).collect());
+        pair_series.push(base);
         let name = format!("figure2_pairs_{}.png", file_stem(&c.scrambler));
         loglog_lines_banded(
             &dir.join(&name),
             &format!(
-                "Figure 2b: mean 2-D L2-star D² of sz16 pairs (0, j), {} ({} seeds, ±2 SE)",
-                c.scrambler, c.seeds
+                "Figure 2b: mean 2-D L2-star D² of sz16 pairs (0, j), {} ({}–{} seeds, ±2 SE)",
+                c.scrambler,
+                c.seeds,
+                c.seeds_per_n.iter().max().unwrap_or(&c.seeds)
             ),
             "N (points)",
             "mean D²",
@@ -924,6 +868,17 @@ pub fn markdown(report: &Report, figures: &[String], regressions: Option<&[Regre
             row("pair-lemma")
         );
     }
+    md += &crate::tradeoff::markdown(&report.tradeoff, &report.owen_variance, &|name| {
+        let q = report.quality.iter().find(|q| q.scrambler == name)?;
+        let family = |f: &str| {
+            q.profile
+                .iter()
+                .find(|(g, _)| g == f)
+                .map_or("–".to_string(), |(_, r)| format!("`{r}`"))
+        };
+        Some(format!("{} / {}", family("node-law"), family("pair-law")))
+    });
+    md += &crate::equivalence::markdown(&report.equivalence);
     md += "\n## Discrepancy (Figure 2 data): mean L2-star D² of sz16\n\nMeans over the seeds \
            shown, ± 2 standard errors; two methods whose intervals overlap are not told apart by \
            this many seeds. The spread is max / min over the 15 pairs (0, j) of the mean 2-D D².\n\n\
@@ -939,7 +894,12 @@ pub fn markdown(report: &Report, figures: &[String], regressions: Option<&[Regre
                 .map_or(String::new(), |se| format!(" ± {:.1e}", 2.0 * se));
             md += &format!(
                 "| {} | {} | {} | {:.4e}{se} | {:.4e} | {:.2} |\n",
-                c.scrambler, c.seeds, n, c.joint[k], mean, spread[k]
+                c.scrambler,
+                c.seeds_at(k),
+                n,
+                c.joint[k],
+                mean,
+                spread[k]
             );
         }
     }

@@ -164,6 +164,7 @@ fn pair_spread_is_max_over_min_per_size() {
         seeds: 4,
         joint_se: vec![0.1, 0.1],
         pair_se: vec![vec![0.0; 3]; 2],
+        seeds_per_n: vec![],
     };
     assert_eq!(c.pair_spread(), vec![4.0, 1.0]);
 }

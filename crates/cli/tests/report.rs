@@ -44,6 +44,7 @@ fn quick_report_writes_figures_and_the_baseline_gate_works() {
         "figure2_joint.png",
         "figure2_pairs_art-owen-2.png",
         "figure2_pairs_art-owen-16p.png",
+        "figure2_pairs_owen-oracle_base-16.png",
         "figure2_spread.png",
     ] {
         let bytes = std::fs::read(path(&format!("a/{f}"))).unwrap();
@@ -57,6 +58,46 @@ fn quick_report_writes_figures_and_the_baseline_gate_works() {
     // How close to Owen: the variance columns, the identity at ratio 0.
     assert!(md.contains("var. ratio level 1"));
     assert!(md.contains("| none | nested | "));
+    // The paper's claims: the trade-off table with the paper's ratios, and an equivalence
+    // verdict for every ART variant against Owen in its base.
+    assert!(md.contains("## Memory and speed: the paper's trade-off"));
+    assert!(
+        md.contains("| art-owen-16p | 16 | 3072 | 12.000 | 3072 | 2.74 (about 3) |"),
+        "{md}"
+    );
+    assert!(md.contains("| art-owen-8p | 8 | 1024 | 4.000 | 1024 | 0.91 (about 1) |"));
+    assert!(md.contains("## Equivalence to full-tree Owen"));
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(path("a/report.json")).unwrap()).unwrap();
+    let verdicts = report["equivalence"].as_array().unwrap();
+    for variant in [
+        "art-owen-2",
+        "q-art-4",
+        "art-owen-8p",
+        "art-owen-16p",
+        "art-owen-m8",
+    ] {
+        assert!(
+            verdicts.iter().any(|v| v["scrambler"] == variant
+                && v["statistic"] == "variance level 1"
+                && ["equivalent", "different", "inconclusive"]
+                    .contains(&v["result"]["verdict"].as_str().unwrap())),
+            "{variant} has no variance verdict"
+        );
+    }
+    let joint16 = verdicts
+        .iter()
+        .find(|v| {
+            v["scrambler"] == "art-owen-16p" && v["statistic"] == "D² joint 16-D" && v["n"] == 16
+        })
+        .expect("16p against the base-16 oracle at N = 16");
+    assert_eq!(joint16["reference"], "owen-oracle:base=16");
+    assert_ne!(joint16["result"]["verdict"], "different");
+    let tradeoff = report["tradeoff"].as_array().unwrap();
+    assert_eq!(tradeoff.len(), 20, "every ART variant");
+    assert!(tradeoff
+        .iter()
+        .all(|r| r["ns_record"].as_f64().unwrap() > 0.0));
 
     // The same seeds reproduce every error figure; doctor the baseline to be better than
     // possible so that this run regresses.

@@ -42,3 +42,55 @@ pub fn expected_l2star_owen(net: Points) -> f64 {
     }
     -(3f64.powi(-(d as i32))) + 2f64.powi(-(d as i32)) / n as f64 + sum / n as f64
 }
+
+/// E[D*²] for `n` independent uniform points in [0,1)^`dims` (the random-points baseline of
+/// the paper's figures): every point is uniform, and two distinct points are independent, so
+/// E[Π(1 − max)] = 3^-d off the diagonal and 2^-d on it, which leaves
+/// E[D*²] = (2^-d − 3^-d) / N. `n` = 0 gives infinity.
+///
+/// ```
+/// use gartowen_discrepancy::expected::expected_l2star_random;
+/// assert!((expected_l2star_random(10, 1) - 1.0 / 60.0).abs() < 1e-15); // (1/2 − 1/3)/10
+/// ```
+pub fn expected_l2star_random(n: usize, dims: u32) -> f64 {
+    let d = dims as i32;
+    (2f64.powi(-d) - 3f64.powi(-d)) / n as f64
+}
+
+#[cfg(test)]
+mod random_tests {
+    use super::*;
+    use crate::Points;
+    use gartowen_core::{SplitMix64, Width};
+
+    #[test]
+    fn the_random_baseline_matches_an_average_over_random_sets() {
+        // 4,000 sets of 8 uniform 32-bit points in 3-D: the sample mean of the compensated D²
+        // lies within 4 standard errors of (2^-3 − 3^-3)/8 (false alarm ~6e-5); a formula off
+        // by 20% is outside.
+        let (n, d) = (8usize, 3usize);
+        let mut rng = SplitMix64::new(77);
+        let values: Vec<f64> = (0..4000)
+            .map(|_| {
+                let words: Vec<u64> = (0..n * d).map(|_| rng.next_u64() >> 32).collect();
+                let p = Points {
+                    words: &words,
+                    dims: d,
+                    width: Width::W32,
+                };
+                crate::compensated::compensated(p, crate::Kind::L2Star).value
+            })
+            .collect();
+        let (mean, se) = crate::curves::mean_and_se(&values);
+        let expect = expected_l2star_random(n, d as u32);
+        assert!(
+            (mean - expect).abs() < 4.0 * se,
+            "{mean} ± {se} vs {expect}"
+        );
+        assert!(
+            (mean - 1.2 * expect).abs() > 4.0 * se,
+            "a 20% error is seen: {se}"
+        );
+        assert!(expected_l2star_random(0, 2).is_infinite());
+    }
+}

@@ -45,6 +45,8 @@ pub fn report(slope: f64, rmse_last: f64, ratio: f64) -> Report {
         quality: vec![],
         discrepancy: vec![],
         owen_variance: vec![],
+        tradeoff: vec![],
+        equivalence: vec![],
         thresholds: Thresholds {
             slope: 0.15,
             rmse_factor: 1.75,

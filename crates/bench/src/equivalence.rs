@@ -1,0 +1,287 @@
+//! The paper's "no noticeable difference from full-tree Owen", as verdicts: each ART variant
+//! against the Owen scramble of its base, by the two-one-sided-tests equivalence judgement of
+//! [`gartowen::battery::equivalence`] (margin ±δ on a ratio, level α, Bonferroni over each
+//! variant's statistics for "different"), on
+//!
+//! - **variance**: the estimator-variance ratio to the exact Owen variance at box levels 1–3
+//!   ([`crate::fidelity`]; the reference is exact, so only the variant's standard error counts);
+//! - **D²**: the mean L2-star D² of sz16 jointly in 16-D and of every pair (0, j), at each N of
+//!   the discrepancy curves, against the curve of `owen-oracle:base=B` with its own seeds
+//!   (independent means: delta method on the log ratio).
+
+use crate::curves::DiscrepancyCurve;
+use crate::fidelity::VarianceRow;
+use gartowen::art::registry::variant_of;
+use gartowen::battery::equivalence::{
+    judge, ratio_of_means, Equivalence, EquivalenceSettings, EquivalenceVerdict,
+};
+use serde::{Deserialize, Serialize};
+
+/// One statistic's equivalence verdict.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct EquivalenceRow {
+    /// The ART variant (registry request).
+    pub scrambler: String,
+    /// What it is compared with.
+    pub reference: String,
+    /// The statistic: `variance level K`, `D² joint 16-D` or `D² pair (0,j)`.
+    pub statistic: String,
+    /// Points, for D² statistics.
+    pub n: Option<usize>,
+    /// The judgement.
+    pub result: Equivalence,
+}
+
+/// One statistic before judging: ratio, its log standard error and the seeds behind it.
+struct Candidate {
+    scrambler: String,
+    reference: String,
+    statistic: String,
+    n: Option<usize>,
+    ratio: f64,
+    log_se: f64,
+    seeds: u64,
+}
+
+/// The base 2^q of an ART registry request (options after `:` ignored).
+fn art_base(request: &str) -> Option<u32> {
+    variant_of(request.split(':').next()?).map(|v| 1 << v.q())
+}
+
+fn variance_candidates(rows: &[VarianceRow]) -> Vec<Candidate> {
+    let mut out = Vec::new();
+    for row in rows.iter().filter(|r| art_base(&r.scrambler).is_some()) {
+        for (k, level) in row.levels.iter().enumerate() {
+            let (Some(Some(ratio)), Some(Some(se))) = (row.ratio.get(k), row.ratio_se.get(k))
+            else {
+                continue;
+            };
+            out.push(Candidate {
+                scrambler: row.scrambler.clone(),
+                reference: format!("exact Owen variance, base {}", row.base),
+                statistic: format!("variance level {level}"),
+                n: None,
+                ratio: *ratio,
+                log_se: se / ratio,
+                seeds: row.seeds,
+            });
+        }
+    }
+    out
+}
+
+fn discrepancy_candidates(curves: &[DiscrepancyCurve]) -> Vec<Candidate> {
+    let mut out = Vec::new();
+    for c in curves {
+        let Some(base) = art_base(&c.scrambler) else {
+            continue;
+        };
+        let reference = format!("owen-oracle:base={base}");
+        let Some(r) = curves.iter().find(|o| o.scrambler == reference) else {
+            continue;
+        };
+        for (k, &n) in c.n.iter().enumerate() {
+            let Some(j) = r.n.iter().position(|&m| m == n) else {
+                continue;
+            };
+            let seeds = c.seeds_at(k).min(r.seeds_at(j)) as u64;
+            let mut push = |statistic: String, a: f64, sa: f64, b: f64, sb: f64| {
+                if let Some((ratio, log_se)) = ratio_of_means(a, sa, b, sb) {
+                    out.push(Candidate {
+                        scrambler: c.scrambler.clone(),
+                        reference: reference.clone(),
+                        statistic,
+                        n: Some(n),
+                        ratio,
+                        log_se,
+                        seeds,
+                    });
+                }
+            };
+            let se = |v: &[f64], i: usize| v.get(i).copied().unwrap_or(f64::NAN);
+            push(
+                "D² joint 16-D".into(),
+                c.joint[k],
+                se(&c.joint_se, k),
+                r.joint[j],
+                se(&r.joint_se, j),
+            );
+            for (p, pair) in c.pairs.iter().enumerate() {
+                let Some(q) = r.pairs.iter().position(|x| x == pair) else {
+                    continue;
+                };
+                let sa = c.pair_se.get(k).map_or(f64::NAN, |v| se(v, p));
+                let sb = r.pair_se.get(j).map_or(f64::NAN, |v| se(v, q));
+                push(
+                    format!("D² pair ({},{})", pair[0], pair[1]),
+                    c.pair_values[k][p],
+                    sa,
+                    r.pair_values[j][q],
+                    sb,
+                );
+            }
+        }
+    }
+    out
+}
+
+/// Every equivalence verdict of the report: each ART variant's statistics judged with margin
+/// `margin` and level `alpha`, "different" corrected over that variant's statistics.
+pub fn equivalence_rows(
+    variance: &[VarianceRow],
+    curves: &[DiscrepancyCurve],
+    margin: f64,
+    alpha: f64,
+) -> Vec<EquivalenceRow> {
+    let mut all = variance_candidates(variance);
+    all.extend(discrepancy_candidates(curves));
+    all.iter()
+        .map(|c| {
+            let family = all.iter().filter(|o| o.scrambler == c.scrambler).count();
+            let settings =
+                EquivalenceSettings::new(margin, alpha, family).expect("valid report settings");
+            EquivalenceRow {
+                scrambler: c.scrambler.clone(),
+                reference: c.reference.clone(),
+                statistic: c.statistic.clone(),
+                n: c.n,
+                result: judge(c.ratio, c.log_se, c.seeds, settings),
+            }
+        })
+        .collect()
+}
+
+/// The report's section: the settings, a per-variant summary and every verdict on the
+/// variance and joint statistics (pairs are summarized; report.json has each one).
+pub fn markdown(rows: &[EquivalenceRow]) -> String {
+    let Some(first) = rows.first() else {
+        return String::new();
+    };
+    let s = first.result.settings;
+    let mut md = format!(
+        "\n## Equivalence to full-tree Owen\n\n\
+         Each ART variant against the Owen scramble of its base, as a ratio (variant / Owen). \
+         **equivalent within ±{pct:.0}%**: the {tost:.0}% interval of the ratio lies inside \
+         [{lo:.2}, {hi:.2}] (two one-sided tests at level α = {a}; the verdict for all of a \
+         variant's statistics together needs no correction). **different**: the two-sided \
+         interval at level α/m excludes 1, m = the variant's number of statistics (Bonferroni: \
+         at most α false 'different' per variant). **inconclusive**: neither; the seeds that would \
+         decide it at the current estimate are named. 'Detectable' is the change the difference \
+         test finds with 80% power. Variance: the box-volume estimator's variance against the \
+         exact Owen variance (levels 1–3); D²: the mean L2-star D² of sz16 against \
+         `owen-oracle` of the same base with its own seeds.\n\n\
+         | scrambler | equivalent | different | inconclusive |\n|---|---|---|---|\n",
+        pct = s.margin * 100.0,
+        tost = (1.0 - 2.0 * s.alpha) * 100.0,
+        lo = 1.0 - s.margin,
+        hi = 1.0 + s.margin,
+        a = s.alpha,
+    );
+    let mut names: Vec<&str> = Vec::new();
+    for r in rows {
+        if !names.contains(&r.scrambler.as_str()) {
+            names.push(&r.scrambler);
+        }
+    }
+    for name in &names {
+        let count = |v: EquivalenceVerdict| {
+            rows.iter()
+                .filter(|r| r.scrambler == *name && r.result.verdict == v)
+                .count()
+        };
+        md += &format!(
+            "| {name} | {} | {} | {} |\n",
+            count(EquivalenceVerdict::Equivalent),
+            count(EquivalenceVerdict::Different),
+            count(EquivalenceVerdict::Inconclusive)
+        );
+    }
+    md += "\n| scrambler | statistic | N | seeds | ratio | 90% interval | detectable | verdict |\n\
+           |---|---|---|---|---|---|---|---|\n";
+    for r in rows.iter().filter(|r| !r.statistic.starts_with("D² pair")) {
+        let e = &r.result;
+        md += &format!(
+            "| {} | {} | {} | {} | {:.3} | [{:.3}, {:.3}] | ±{:.0}% | {} |\n",
+            r.scrambler,
+            r.statistic,
+            r.n.map_or("–".into(), |n| n.to_string()),
+            e.seeds,
+            e.ratio,
+            e.tost_interval[0],
+            e.tost_interval[1],
+            e.detectable * 100.0,
+            e.words()
+        );
+    }
+    md
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn curve(name: &str, joint: f64, se: f64, seeds: usize) -> DiscrepancyCurve {
+        DiscrepancyCurve {
+            scrambler: name.into(),
+            n: vec![16, 32],
+            joint: vec![joint, joint / 2.0],
+            pairs: vec![[0, 1]],
+            pair_values: vec![vec![joint], vec![joint / 2.0]],
+            seeds,
+            joint_se: vec![se, se / 2.0],
+            pair_se: vec![vec![se], vec![se / 2.0]],
+            seeds_per_n: vec![],
+        }
+    }
+
+    #[test]
+    fn each_art_curve_is_judged_against_the_oracle_of_its_base() {
+        let curves = vec![
+            curve("art-owen-16p", 1.02, 0.005, 1000),
+            curve("owen-oracle:base=16", 1.0, 0.005, 1000),
+            curve("art-owen-2", 1.5, 0.005, 1000),
+            curve("owen-oracle:base=2", 1.0, 0.005, 1000),
+            curve("lk-hash", 3.0, 0.005, 1000),
+        ];
+        let rows = equivalence_rows(&[], &curves, 0.1, 0.05);
+        // Two ART curves × two sizes × (joint + one pair); lk-hash and the oracles are not judged.
+        assert_eq!(rows.len(), 8);
+        assert!(rows
+            .iter()
+            .filter(|r| r.scrambler == "art-owen-16p")
+            .all(|r| r.reference == "owen-oracle:base=16"
+                && r.result.verdict == EquivalenceVerdict::Equivalent));
+        assert!(rows
+            .iter()
+            .filter(|r| r.scrambler == "art-owen-2")
+            .all(|r| r.result.verdict == EquivalenceVerdict::Different));
+        // The family is the variant's own statistics: 4.
+        assert!(rows.iter().all(|r| r.result.settings.family == 4));
+        let md = markdown(&rows);
+        assert!(md.contains("| art-owen-16p | 4 | 0 | 0 |"), "{md}");
+        assert!(md.contains("| art-owen-2 | 0 | 4 | 0 |"), "{md}");
+        assert_eq!(
+            md.matches("| art-owen-2 | 0 | 4 | 0 |").count(),
+            1,
+            "one summary row each"
+        );
+    }
+
+    #[test]
+    fn variance_rows_are_judged_against_the_exact_variance() {
+        let rows = vec![VarianceRow {
+            scrambler: "q-art-4".into(),
+            base: 4,
+            seeds: 1000,
+            levels: vec![1, 2, 3],
+            ratio: vec![Some(1.0), Some(1.4), None],
+            ratio_se: vec![Some(0.02), Some(0.03), None],
+        }];
+        let out = equivalence_rows(&rows, &[], 0.1, 0.05);
+        assert_eq!(out.len(), 2, "a level without a ratio is skipped");
+        assert_eq!(out[0].result.verdict, EquivalenceVerdict::Equivalent);
+        assert_eq!(out[1].result.verdict, EquivalenceVerdict::Different);
+        assert!((out[1].result.log_se - 0.03 / 1.4).abs() < 1e-12);
+        assert_eq!(out[0].reference, "exact Owen variance, base 4");
+    }
+}
