@@ -509,3 +509,28 @@ fn a_32_bit_frame_is_refused_by_a_64_bit_session_and_after_a_failure_words_becom
     assert_eq!(words, [0, 0, 0]);
     assert!(dead.failure().is_some());
 }
+
+#[test]
+fn equivalence_to_owen_passes_a_true_owen_program_and_fails_a_digital_shift() {
+    // The check a user runs with `verify --external … --equivalent-to owen`: the C Owen
+    // scramble (keyed differently from the oracle) is equivalent within ±10% in base 16; the
+    // digital shift's coordinate mean is not (fixed seeds 0..4000, α = 0.05).
+    use gartowen::battery::owen_equivalence::check_equivalent_to_owen;
+    let ex = examples();
+    for (command, base, pass) in [
+        (ex.4.display().to_string(), PowerOfTwoBase::B16, true),
+        (ex.2.display().to_string(), PowerOfTwoBase::B2, false),
+    ] {
+        let p =
+            ExternalProcess::spawn(&command, base, Width::W64, Duration::from_secs(10)).unwrap();
+        let c = external_candidate(Arc::new(p), 0, Claim::OWEN, None);
+        let r = check_equivalent_to_owen(c.with_seed.as_ref(), base, Width::W64, 4000, 0.1);
+        let want = if pass { Verdict::Pass } else { Verdict::Fail };
+        assert_eq!(r.verdict, want, "{command}: {}", r.detail);
+        assert!(r.detail.contains("4000 seeds"), "{}", r.detail);
+        if !pass {
+            assert!(r.detail.contains("mean dim 0: ratio"), "{}", r.detail);
+            assert!(r.detail.contains("different"), "{}", r.detail);
+        }
+    }
+}

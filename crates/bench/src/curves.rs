@@ -79,13 +79,13 @@ pub(crate) fn sz16_words(
 }
 
 /// Seeds per size of the discrepancy curves: as many as a budget of N²·seeds allows (2^18
-/// quick, 2^22 full), between 16 and 256 seeds quick and 64 and 1000 full, so the small sizes,
+/// quick, 2^24 full), between 16 and 256 seeds quick and 64 and 4000 full, so the small sizes,
 /// where one seed costs little and the means are heavy-tailed, are measured to a few percent.
 pub fn curve_seeds(n: usize, quick: bool) -> usize {
     let (budget, lo, hi) = if quick {
         (1usize << 18, 16, 256)
     } else {
-        (1usize << 22, 64, 1000)
+        (1usize << 24, 64, 4000)
     };
     (budget / (n * n).max(1)).clamp(lo, hi)
 }

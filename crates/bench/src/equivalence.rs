@@ -4,7 +4,8 @@
 //! variant's statistics for "different"), on
 //!
 //! - **variance**: the estimator-variance ratio to the exact Owen variance at box levels 1–3
-//!   ([`crate::fidelity`]; the reference is exact, so only the variant's standard error counts);
+//!   ([`crate::fidelity`]; the reference is exact, so only the variant's standard error counts),
+//!   at the levels with enough expected hits to judge ([`MIN_EXPECTED_HITS`]);
 //! - **D²**: the mean L2-star D² of sz16 jointly in 16-D and of every pair (0, j), at each N of
 //!   the discrepancy curves, against the curve of `owen-oracle:base=B` with its own seeds
 //!   (independent means: delta method on the log ratio).
@@ -15,6 +16,7 @@ use gartowen::art::registry::variant_of;
 use gartowen::battery::equivalence::{
     judge, ratio_of_means, Equivalence, EquivalenceSettings, EquivalenceVerdict,
 };
+use gartowen::battery::owen_equivalence::{expected_hits, MIN_EXPECTED_HITS};
 use serde::{Deserialize, Serialize};
 
 /// One statistic's equivalence verdict.
@@ -51,7 +53,22 @@ fn art_base(request: &str) -> Option<u32> {
 fn variance_candidates(rows: &[VarianceRow]) -> Vec<Candidate> {
     let mut out = Vec::new();
     for row in rows.iter().filter(|r| art_base(&r.scrambler).is_some()) {
+        let q = row.base.trailing_zeros();
+        for (dim, (ratio, se)) in row.mean_ratio.iter().zip(&row.mean_ratio_se).enumerate() {
+            out.push(Candidate {
+                scrambler: row.scrambler.clone(),
+                reference: format!("exact Owen variance, base {}", row.base),
+                statistic: format!("variance of the mean, dim {dim}"),
+                n: None,
+                ratio: *ratio,
+                log_se: se / ratio,
+                seeds: row.seeds,
+            });
+        }
         for (k, level) in row.levels.iter().enumerate() {
+            if expected_hits(row.seeds, q, *level) < MIN_EXPECTED_HITS {
+                continue;
+            }
             let (Some(Some(ratio)), Some(Some(se))) = (row.ratio.get(k), row.ratio_se.get(k))
             else {
                 continue;
@@ -59,7 +76,7 @@ fn variance_candidates(rows: &[VarianceRow]) -> Vec<Candidate> {
             out.push(Candidate {
                 scrambler: row.scrambler.clone(),
                 reference: format!("exact Owen variance, base {}", row.base),
-                statistic: format!("variance level {level}"),
+                statistic: format!("variance box level {level}"),
                 n: None,
                 ratio: *ratio,
                 log_se: se / ratio,
@@ -167,8 +184,10 @@ pub fn markdown(rows: &[EquivalenceRow]) -> String {
          interval at level α/m excludes 1, m = the variant's number of statistics (Bonferroni: \
          at most α false 'different' per variant). **inconclusive**: neither; the seeds that would \
          decide it at the current estimate are named. 'Detectable' is the change the difference \
-         test finds with 80% power. Variance: the box-volume estimator's variance against the \
-         exact Owen variance (levels 1–3); D²: the mean L2-star D² of sz16 against \
+         test finds with 80% power. Variance: the variance over seeds of the coordinate mean \
+         (which sees the joint law inside a dimension) and of box-volume estimates (levels 1–3, \
+         where enough points are expected: these see only nestedness and uniform outputs) \
+         against the exact Owen values; D²: the mean L2-star D² of sz16 against \
          `owen-oracle` of the same base with its own seeds.\n\n\
          | scrambler | equivalent | different | inconclusive |\n|---|---|---|---|\n",
         pct = s.margin * 100.0,
@@ -276,12 +295,21 @@ mod tests {
             levels: vec![1, 2, 3],
             ratio: vec![Some(1.0), Some(1.4), None],
             ratio_se: vec![Some(0.02), Some(0.03), None],
+            mean_ratio: vec![0.5, 1.01],
+            mean_ratio_se: vec![0.01, 0.01],
         }];
         let out = equivalence_rows(&rows, &[], 0.1, 0.05);
-        assert_eq!(out.len(), 2, "a level without a ratio is skipped");
-        assert_eq!(out[0].result.verdict, EquivalenceVerdict::Equivalent);
-        assert_eq!(out[1].result.verdict, EquivalenceVerdict::Different);
-        assert!((out[1].result.log_se - 0.03 / 1.4).abs() < 1e-12);
-        assert_eq!(out[0].reference, "exact Owen variance, base 4");
+        assert_eq!(
+            out.len(),
+            4,
+            "two means, and a level without a ratio is skipped"
+        );
+        assert_eq!(out[0].statistic, "variance of the mean, dim 0");
+        assert_eq!(out[0].result.verdict, EquivalenceVerdict::Different);
+        assert_eq!(out[1].result.verdict, EquivalenceVerdict::Equivalent);
+        assert_eq!(out[2].result.verdict, EquivalenceVerdict::Equivalent);
+        assert_eq!(out[3].result.verdict, EquivalenceVerdict::Different);
+        assert!((out[3].result.log_se - 0.03 / 1.4).abs() < 1e-12);
+        assert_eq!(out[2].reference, "exact Owen variance, base 4");
     }
 }

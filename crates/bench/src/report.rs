@@ -309,7 +309,9 @@ pub fn build_report(
     let owen_variance = crate::fidelity::variance_ratios(
         registry,
         &with_base,
-        if config.quick { 200 } else { 1000 },
+        // Enough seeds in the full report for the equivalence verdicts to reach level 1 of
+        // base 256 (2,000 expected hits; `owen_equivalence::MIN_EXPECTED_HITS`).
+        if config.quick { 500 } else { 8000 },
     );
     let tradeoff = crate::tradeoff::measure_tradeoff(config.quick);
     let equivalence = crate::equivalence::equivalence_rows(

@@ -557,3 +557,74 @@ fn signal_ends_helper(body: impl Fn(&str) -> String) {
     }
     assert!(!alive(helper), "helper {helper} outlived verify");
 }
+
+#[test]
+fn equivalent_to_owen_is_a_check_with_its_seeds_margin_and_verdict() {
+    let dir = tempfile::tempdir().unwrap();
+    let json = dir.path().join("eq.json");
+    let o = gartowen(&[
+        "verify",
+        "--impl",
+        "owen-oracle:base=4",
+        "--impl",
+        "art-owen-t4",
+        "--equivalent-to",
+        "owen",
+        "--equivalence-seeds",
+        "4000",
+        "--json",
+        json.to_str().unwrap(),
+    ]);
+    // The translation-only ART variant is nested and fair node by node, but its coordinate
+    // mean's variance is not Owen's: exit 1 with the check named.
+    assert_eq!(o.status.code(), Some(1));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains("equivalent-to-owen"), "{text}");
+    assert!(
+        text.contains("FAIL equivalent-to-owen: estimator variance"),
+        "{text}"
+    );
+    let cert: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    assert_eq!(cert["parameters"]["equivalence"]["seeds"], 4000);
+    assert_eq!(cert["parameters"]["equivalence"]["margin"], 0.1);
+    let verdict = |k: usize| {
+        cert["result"]["implementations"][k]["checks"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|c| c["check"] == "equivalent-to-owen")
+            .unwrap()["verdict"]
+            .clone()
+    };
+    assert_eq!(verdict(0), "pass");
+    assert_eq!(verdict(1), "fail");
+    // Usage errors: a margin outside (0, 1), a margin without the check, an unknown reference,
+    // too many seeds.
+    for args in [
+        &[
+            "verify",
+            "--impl",
+            "lk-hash",
+            "--equivalent-to",
+            "owen",
+            "--margin",
+            "1.5",
+        ][..],
+        &["verify", "--impl", "lk-hash", "--margin", "0.2"][..],
+        &["verify", "--impl", "lk-hash", "--equivalent-to", "sobol"][..],
+        &[
+            "verify",
+            "--impl",
+            "lk-hash",
+            "--equivalent-to",
+            "owen",
+            "--equivalence-seeds",
+            "9999999",
+        ][..],
+    ] {
+        let o = gartowen(args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert!(!o.stderr.is_empty());
+    }
+}

@@ -25,6 +25,7 @@ pub mod law;
 pub mod laws;
 pub mod marginal;
 pub mod nets;
+pub mod owen_equivalence;
 pub mod pair_lemma;
 pub mod pipe_holders;
 pub mod sampling;

@@ -66,6 +66,11 @@ pub enum LevelArg {
 /// External implementations (the protocol is in the README, "External implementations"):
 ///   gartowen verify --external './my_scrambler --fast' --base 16 --width 32
 ///   gartowen verify --external ./owen_per_bit --base 2 --width 64 --expect owen-per-bit-hash
+///
+/// Equivalence to Owen (the estimator variance against the exact Owen variance of the base,
+/// TOST with a stated margin; the seeds used are printed and in the JSON):
+///   gartowen verify --impl art-owen-16p --equivalent-to owen --margin 0.1
+///   gartowen verify --external ./owen_nested --base 16 --equivalent-to owen --equivalence-seeds 4000
 #[derive(Args, Debug)]
 #[command(verbatim_doc_comment)]
 pub struct VerifyArgs {
@@ -121,6 +126,37 @@ pub struct VerifyArgs {
     /// External programs default to owen.
     #[arg(long)]
     pub claim: Option<String>,
+    /// Also test equivalence to the full-tree Owen scramble of the implementation's base: the
+    /// variance of a box-volume estimator (64 fixed points, boxes of 1, 2 and 3 digits) over
+    /// seeds 0..S, divided by its exact Owen value, must have its 90% interval inside
+    /// [1 − margin, 1 + margin] at every level (TOST, α = 0.05). Check `equivalent-to-owen`:
+    /// pass = equivalent; fail = different, or inconclusive with the seeds that would decide.
+    #[arg(long, value_parser = ["owen"], conflicts_with_all = ["merge", "dims"])]
+    pub equivalent_to: Option<String>,
+    /// Equivalence margin on the variance ratio (0 < margin < 1).
+    #[arg(long, default_value_t = gartowen::battery::equivalence::DEFAULT_MARGIN,
+          value_parser = parse_margin, requires = "equivalent_to")]
+    pub margin: f64,
+    /// Seeds of the equivalence check (default: 1000 quick, 10000 full, 50000 exhaustive;
+    /// at most 1000000).
+    #[arg(long, value_parser = clap::value_parser!(u64).range(2..=1_000_000),
+          requires = "equivalent_to")]
+    pub equivalence_seeds: Option<u64>,
+}
+
+fn parse_margin(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(m) if m > 0.0 && m < 1.0 => Ok(m),
+        _ => Err(format!(
+            "'{s}' is not a margin in (0, 1), e.g. 0.1 for ±10%"
+        )),
+    }
+}
+
+/// The seeds of the equivalence check at `level`.
+fn equivalence_seeds(a: &VerifyArgs, level: Level) -> u64 {
+    a.equivalence_seeds
+        .unwrap_or_else(|| gartowen::battery::owen_equivalence::equivalence_seeds(level))
 }
 
 fn level_name(level: Level) -> &'static str {
@@ -132,12 +168,13 @@ fn level_name(level: Level) -> &'static str {
 }
 
 /// What every shard of one run must share (and the merged certificate records).
-const SHARED_PARAMETERS: [&str; 5] = [
+const SHARED_PARAMETERS: [&str; 6] = [
     "level",
     "node_law_seeds",
     "family_alpha",
     "claim_override",
     "implementations_total",
+    "equivalence",
 ];
 
 /// Reads shard certificates and merges them: the shards 1..N of one run, each exactly once,
@@ -263,7 +300,22 @@ fn run_external(
         claim,
         a.expect.as_deref().map(|n| (&registry, n)),
     );
-    let report = check_candidate(&candidate, level, 1);
+    let mut report = check_candidate(&candidate, level, 1);
+    if a.equivalent_to.is_some() {
+        let mut check = gartowen::battery::owen_equivalence::check_equivalent_to_owen(
+            candidate.with_seed.as_ref(),
+            base,
+            width,
+            equivalence_seeds(a, level),
+            a.margin,
+        );
+        if let Some(e) = process.failure() {
+            check.verdict = Verdict::Fail;
+            check.detail = format!("external program failed: {e}");
+            check.value = None;
+        }
+        report.checks.push(check);
+    }
     Ok((report, process.failure().map(|e| e.to_string())))
 }
 
@@ -358,6 +410,23 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
             },
         )?;
         bar.finish_and_clear();
+        let mut reports = reports;
+        if a.equivalent_to.is_some() {
+            for r in &mut reports {
+                let base = PowerOfTwoBase::from_base(u64::from(r.base))
+                    .map_err(|e| CliError::Usage(e.to_string()))?;
+                let builder = gartowen::verify::registry_seeds(&registry, &r.name, base);
+                r.checks.push(
+                    gartowen::battery::owen_equivalence::check_equivalent_to_owen(
+                        builder.as_ref(),
+                        base,
+                        Width::W32,
+                        equivalence_seeds(&a, level),
+                        a.margin,
+                    ),
+                );
+            }
+        }
         let inputs = registry_inputs(&reports);
         (level, reports, inputs)
     };
@@ -383,6 +452,12 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
             "shard": { "index": shard_record.index, "count": shard_record.count },
             "implementations_total": total,
         });
+        if a.equivalent_to.is_some() {
+            parameters["equivalence"] = serde_json::json!({
+                "to": "owen", "margin": a.margin, "alpha": gartowen::battery::equivalence::DEFAULT_ALPHA,
+                "seeds": equivalence_seeds(&a, level),
+            });
+        }
         if let Some(command) = &a.external {
             parameters["external"] = serde_json::json!({
                 "command": command, "base": a.base, "width": a.width, "seed": a.seed,
@@ -445,6 +520,14 @@ fn print_table(reports: &[ImplReport]) -> Result<(), CliError> {
         crate::outln!("{}", row.trim_end());
         for c in r.checks.iter().filter(|c| c.verdict == Verdict::Fail) {
             crate::outln!("    FAIL {}: {}", c.check, c.detail);
+        }
+        // An equivalence verdict is worth reading when it passes too: it states the intervals.
+        for c in r
+            .checks
+            .iter()
+            .filter(|c| c.check == "equivalent-to-owen" && c.verdict != Verdict::Fail)
+        {
+            crate::outln!("    {}: {}", c.check, c.detail);
         }
         if !r.profile.is_empty() {
             let cells: Vec<String> = r
