@@ -5,6 +5,7 @@
 //! This is gartowen's reconstruction from the papers' text, frozen by golden vectors; it is not
 //! the authors' code.
 
+pub mod composed;
 mod dims;
 pub mod engine;
 pub mod grammar;
@@ -13,6 +14,7 @@ pub mod record;
 pub mod registry;
 pub mod variants;
 
+pub use composed::QArtComposed;
 pub use engine::{ArtMutant, ArtOwen, BatchKernel, BATCH_TABLE_BYTES};
 pub use grammar::Grammar;
 pub use record::ArtRecord;

@@ -248,6 +248,23 @@ impl ArtRecord {
         }
     }
 
+    /// Symbol `s`'s ψ as a GF(2) matrix, for the variants whose ψ is linear (Q-ART and the
+    /// matrix variants); `None` for the others.
+    pub fn psi_matrix(&self, s: u32) -> Option<Gf2Matrix> {
+        match self.layout {
+            PsiLayout::Gl2Index => Some(self.gl2[self.psi_field(s) as usize]),
+            PsiLayout::Matrix => {
+                let q = self.variant.q();
+                let m = self.psi_field(s);
+                let rows: Vec<u8> = (0..q)
+                    .map(|i| ((m >> (q * i)) & ((1 << q) - 1)) as u8)
+                    .collect();
+                Some(Gf2Matrix::from_rows(q, &rows).expect("q ≤ 8 rows of q bits"))
+            }
+            _ => None,
+        }
+    }
+
     /// Symbol `s`'s ψ as a permutation, or `None` where ψ is the identity for every symbol.
     pub fn psi(&self, s: u32) -> Option<Permutation> {
         if self.layout == PsiLayout::Identity {

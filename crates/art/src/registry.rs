@@ -2,7 +2,7 @@
 //! the hash peers.
 
 use crate::peers::{DigitalShift, LinearMatrixScramble, LkFlavor, LkHash, PerBitOwen};
-use crate::{ArtOwen, ArtVariant};
+use crate::{ArtOwen, ArtVariant, QArtComposed};
 use gartowen_core::registry::BuildContext;
 use gartowen_core::{
     Claim, CoreError, NodeGroup, PowerOfTwoBase, Scrambler, ScramblerRequest, ScramblerSpec,
@@ -36,8 +36,30 @@ pub fn variant_of(name: &str) -> Option<ArtVariant> {
 }
 
 fn build_art(req: &ScramblerRequest, ctx: &BuildContext) -> Result<Box<dyn Scrambler>, CoreError> {
-    req.allow_only(&["table"])?;
     let variant = variant_of(&req.name).expect("registered names parse");
+    if variant == ArtVariant::QArt4 {
+        req.allow_only(&["table", "compose"])?;
+    } else {
+        req.allow_only(&["table"])?;
+    }
+    if req.flag("compose") {
+        return Err(CoreError::InvalidOption {
+            scrambler: req.name.clone(),
+            option: "compose".into(),
+            reason: "needs a value: compose=translation or compose=linear".into(),
+        });
+    }
+    let composed = match req.option("compose") {
+        None | Some("translation") => false,
+        Some("linear") => true,
+        Some(other) => {
+            return Err(CoreError::InvalidOption {
+                scrambler: req.name.clone(),
+                option: "compose".into(),
+                reason: format!("'{other}': expected translation (the default) or linear"),
+            })
+        }
+    };
     let symbols = match req.option("table") {
         None => DEFAULT_SYMBOLS,
         Some(t) => t.parse().map_err(|_| CoreError::InvalidOption {
@@ -55,13 +77,16 @@ fn build_art(req: &ScramblerRequest, ctx: &BuildContext) -> Result<Box<dyn Scram
             reason: format!("{symbols} symbols: at most {MAX_TABLE_SYMBOLS}"),
         });
     }
-    ArtOwen::new(variant, symbols, ctx.seed)
-        .map(|s| Box::new(s) as Box<dyn Scrambler>)
-        .map_err(|e| CoreError::InvalidOption {
-            scrambler: req.name.clone(),
-            option: "table".into(),
-            reason: e.to_string(),
-        })
+    let built = if composed {
+        QArtComposed::new(symbols, ctx.seed).map(|s| Box::new(s) as Box<dyn Scrambler>)
+    } else {
+        ArtOwen::new(variant, symbols, ctx.seed).map(|s| Box::new(s) as Box<dyn Scrambler>)
+    };
+    built.map_err(|e| CoreError::InvalidOption {
+        scrambler: req.name.clone(),
+        option: "table".into(),
+        reason: e.to_string(),
+    })
 }
 
 fn build_lk(req: &ScramblerRequest, ctx: &BuildContext) -> Result<Box<dyn Scrambler>, CoreError> {
@@ -135,7 +160,7 @@ pub fn specs() -> Vec<ScramblerSpec> {
         ),
         art(
             "q-art-4",
-            "Q-ART base 4: psi in GL(2,2) plus codes; :table=SYMBOLS",
+            "Q-ART base 4: psi in GL(2,2) plus codes; :table=SYMBOLS, :compose=linear (psi composed along the tree too)",
         ),
         art(
             "art-owen-8p",

@@ -40,6 +40,30 @@ impl DiscrepancyCurve {
         self.seeds_per_n.get(k).copied().unwrap_or(self.seeds)
     }
 
+    /// The standard error of each [`DiscrepancyCurve::pair_spread`] (delta method on
+    /// ln(max / min) with the two extreme pairs' standard errors; it ignores that the extremes
+    /// were selected, so it understates the noise when many pairs are alike). NaN without
+    /// standard errors.
+    pub fn pair_spread_se(&self) -> Vec<f64> {
+        self.pair_values
+            .iter()
+            .enumerate()
+            .map(|(k, v)| {
+                let arg = |better: fn(f64, f64) -> bool| {
+                    (0..v.len()).fold(0, |b, i| if better(v[i], v[b]) { i } else { b })
+                };
+                let (hi, lo) = (arg(|a, b| a > b), arg(|a, b| a < b));
+                let se = |i: usize| self.pair_se.get(k).and_then(|s| s.get(i)).copied();
+                match (se(hi), se(lo)) {
+                    (Some(sh), Some(sl)) => {
+                        (v[hi] / v[lo]) * ((sh / v[hi]).powi(2) + (sl / v[lo]).powi(2)).sqrt()
+                    }
+                    _ => f64::NAN,
+                }
+            })
+            .collect()
+    }
+
     /// max over pairs / min over pairs of the mean 2-D D², per size: 1 when every pair is as
     /// good as every other (the paper's "consistent quality" in one number per N).
     pub fn pair_spread(&self) -> Vec<f64> {
@@ -78,23 +102,40 @@ pub(crate) fn sz16_words(
         .collect()
 }
 
-/// Seeds per size of the discrepancy curves: as many as a budget of N²·seeds allows (2^18
-/// quick, 2^24 full), between 16 and 256 seeds quick and 64 and 4000 full, so the small sizes,
+/// Seeds per size of the discrepancy curves: as many as a budget of N²·seeds allows (2^17
+/// quick, 2^24 full), between 16 and 128 seeds quick and 64 and 4000 full, so the small sizes,
 /// where one seed costs little and the means are heavy-tailed, are measured to a few percent.
 pub fn curve_seeds(n: usize, quick: bool) -> usize {
     let (budget, lo, hi) = if quick {
-        (1usize << 18, 16, 256)
+        (1usize << 17, 16, 128)
     } else {
         (1usize << 24, 64, 4000)
     };
     (budget / (n * n).max(1)).clamp(lo, hi)
 }
 
-/// The scramblers of the discrepancy curves and the largest log2 N of each: binary and base-16
-/// ART against the oracles of their bases, and in the full report Q-ART and base 8 against
-/// theirs (to N = 1024, which bounds their cost).
-fn curve_requests(quick: bool) -> Vec<(&'static str, u32)> {
-    let top = if quick { 8 } else { 12 };
+/// The sizes of the discrepancy curves up to `max`: the powers of two from 16, and sizes between
+/// them that are powers of neither 2 nor 16 (the paper stresses non-powers of 16).
+pub fn curve_sizes(quick: bool, max: usize) -> Vec<usize> {
+    let extra: &[usize] = if quick {
+        &[24, 48, 100]
+    } else {
+        &[24, 48, 100, 300, 1000, 3000]
+    };
+    let mut sizes: Vec<usize> = (4..=12)
+        .map(|k| 1usize << k)
+        .chain(extra.iter().copied())
+        .filter(|&n| n <= max)
+        .collect();
+    sizes.sort_unstable();
+    sizes
+}
+
+/// The scramblers of the discrepancy curves and the largest N of each: binary and base-16 ART
+/// against the oracles of their bases, and in the full report Q-ART (translation-only and with
+/// composed linear parts) and base 8 against theirs (to N = 1024, which bounds their cost).
+fn curve_requests(quick: bool) -> Vec<(&'static str, usize)> {
+    let top = if quick { 256 } else { 4096 };
     let mut v = vec![
         ("art-owen-2", top),
         ("art-owen-16p", top),
@@ -103,10 +144,11 @@ fn curve_requests(quick: bool) -> Vec<(&'static str, u32)> {
     ];
     if !quick {
         v.extend([
-            ("q-art-4", 10),
-            ("owen-oracle:base=4", 10),
-            ("art-owen-8p", 10),
-            ("owen-oracle:base=8", 10),
+            ("q-art-4", 1024),
+            ("q-art-4:compose=linear", 1024),
+            ("owen-oracle:base=4", 1024),
+            ("art-owen-8p", 1024),
+            ("owen-oracle:base=8", 1024),
         ]);
     }
     v
@@ -118,8 +160,8 @@ pub fn discrepancy_curves(registry: &Registry, quick: bool) -> Vec<DiscrepancyCu
     let pairs = curves::pair_list(16, false);
     curve_requests(quick)
         .into_iter()
-        .map(|(request, max_log2)| {
-            let sizes: Vec<usize> = (4..=max_log2).map(|k| 1usize << k).collect();
+        .map(|(request, max_n)| {
+            let sizes = curve_sizes(quick, max_n);
             let points: Vec<_> = sizes
                 .iter()
                 .flat_map(|&n| {

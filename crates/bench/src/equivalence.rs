@@ -93,49 +93,118 @@ fn discrepancy_candidates(curves: &[DiscrepancyCurve]) -> Vec<Candidate> {
         let Some(base) = art_base(&c.scrambler) else {
             continue;
         };
-        let reference = format!("owen-oracle:base={base}");
-        let Some(r) = curves.iter().find(|o| o.scrambler == reference) else {
-            continue;
-        };
-        for (k, &n) in c.n.iter().enumerate() {
-            let Some(j) = r.n.iter().position(|&m| m == n) else {
+        let direct = DIRECT_COMPARISONS
+            .iter()
+            .find(|(n, _)| *n == c.scrambler)
+            .map(|(_, r)| r.to_string());
+        for reference in std::iter::once(format!("owen-oracle:base={base}")).chain(direct) {
+            let Some(r) = curves.iter().find(|o| o.scrambler == reference) else {
                 continue;
             };
-            let seeds = c.seeds_at(k).min(r.seeds_at(j)) as u64;
-            let mut push = |statistic: String, a: f64, sa: f64, b: f64, sb: f64| {
-                if let Some((ratio, log_se)) = ratio_of_means(a, sa, b, sb) {
-                    out.push(Candidate {
-                        scrambler: c.scrambler.clone(),
-                        reference: reference.clone(),
-                        statistic,
-                        n: Some(n),
-                        ratio,
-                        log_se,
-                        seeds,
-                    });
-                }
+            compare_curves(c, r, &reference, &mut out);
+        }
+    }
+    out
+}
+
+/// The D² statistics of curve `c` against curve `r` (named `reference`) at their common sizes.
+fn compare_curves(
+    c: &DiscrepancyCurve,
+    r: &DiscrepancyCurve,
+    reference: &str,
+    out: &mut Vec<Candidate>,
+) {
+    for (k, &n) in c.n.iter().enumerate() {
+        let Some(j) = r.n.iter().position(|&m| m == n) else {
+            continue;
+        };
+        let seeds = c.seeds_at(k).min(r.seeds_at(j)) as u64;
+        let mut push = |statistic: String, a: f64, sa: f64, b: f64, sb: f64| {
+            if let Some((ratio, log_se)) = ratio_of_means(a, sa, b, sb) {
+                out.push(Candidate {
+                    scrambler: c.scrambler.clone(),
+                    reference: reference.to_string(),
+                    statistic,
+                    n: Some(n),
+                    ratio,
+                    log_se,
+                    seeds,
+                });
+            }
+        };
+        let se = |v: &[f64], i: usize| v.get(i).copied().unwrap_or(f64::NAN);
+        push(
+            "D² joint 16-D".into(),
+            c.joint[k],
+            se(&c.joint_se, k),
+            r.joint[j],
+            se(&r.joint_se, j),
+        );
+        for (p, pair) in c.pairs.iter().enumerate() {
+            let Some(q) = r.pairs.iter().position(|x| x == pair) else {
+                continue;
             };
-            let se = |v: &[f64], i: usize| v.get(i).copied().unwrap_or(f64::NAN);
+            let sa = c.pair_se.get(k).map_or(f64::NAN, |v| se(v, p));
+            let sb = r.pair_se.get(j).map_or(f64::NAN, |v| se(v, q));
             push(
-                "D² joint 16-D".into(),
-                c.joint[k],
-                se(&c.joint_se, k),
-                r.joint[j],
-                se(&r.joint_se, j),
+                format!("D² pair ({},{})", pair[0], pair[1]),
+                c.pair_values[k][p],
+                sa,
+                r.pair_values[j][q],
+                sb,
             );
-            for (p, pair) in c.pairs.iter().enumerate() {
-                let Some(q) = r.pairs.iter().position(|x| x == pair) else {
-                    continue;
-                };
-                let sa = c.pair_se.get(k).map_or(f64::NAN, |v| se(v, p));
-                let sb = r.pair_se.get(j).map_or(f64::NAN, |v| se(v, q));
-                push(
-                    format!("D² pair ({},{})", pair[0], pair[1]),
-                    c.pair_values[k][p],
-                    sa,
-                    r.pair_values[j][q],
-                    sb,
-                );
+        }
+    }
+}
+
+/// Variants judged against another ART variant as well as against Owen: (variant, reference).
+pub const DIRECT_COMPARISONS: [(&str, &str); 1] = [("q-art-4:compose=linear", "q-art-4")];
+
+/// The variance statistics of `row` against those of `reference` (independent seeds of two
+/// implementations: delta method), for [`DIRECT_COMPARISONS`].
+fn direct_variance_candidates(rows: &[VarianceRow]) -> Vec<Candidate> {
+    let mut out = Vec::new();
+    for (name, reference) in DIRECT_COMPARISONS {
+        let (Some(a), Some(b)) = (
+            rows.iter().find(|r| r.scrambler == name),
+            rows.iter().find(|r| r.scrambler == reference),
+        ) else {
+            continue;
+        };
+        let mut push = |statistic: String, ra: f64, sa: f64, rb: f64, sb: f64| {
+            if let Some((ratio, log_se)) = ratio_of_means(ra, sa, rb, sb) {
+                out.push(Candidate {
+                    scrambler: name.into(),
+                    reference: reference.into(),
+                    statistic,
+                    n: None,
+                    ratio,
+                    log_se,
+                    seeds: a.seeds.min(b.seeds),
+                });
+            }
+        };
+        for dim in 0..a.mean_ratio.len().min(b.mean_ratio.len()) {
+            push(
+                format!("variance of the mean, dim {dim}"),
+                a.mean_ratio[dim],
+                a.mean_ratio_se[dim],
+                b.mean_ratio[dim],
+                b.mean_ratio_se[dim],
+            );
+        }
+        let q = a.base.trailing_zeros();
+        for (k, level) in a.levels.iter().enumerate() {
+            if expected_hits(a.seeds.min(b.seeds), q, *level) < MIN_EXPECTED_HITS {
+                continue;
+            }
+            if let (Some(Some(ra)), Some(Some(sa)), Some(Some(rb)), Some(Some(sb))) = (
+                a.ratio.get(k),
+                a.ratio_se.get(k),
+                b.ratio.get(k),
+                b.ratio_se.get(k),
+            ) {
+                push(format!("variance box level {level}"), *ra, *sa, *rb, *sb);
             }
         }
     }
@@ -151,6 +220,7 @@ pub fn equivalence_rows(
     alpha: f64,
 ) -> Vec<EquivalenceRow> {
     let mut all = variance_candidates(variance);
+    all.extend(direct_variance_candidates(variance));
     all.extend(discrepancy_candidates(curves));
     all.iter()
         .map(|c| {
@@ -311,5 +381,48 @@ mod tests {
         assert_eq!(out[3].result.verdict, EquivalenceVerdict::Different);
         assert!((out[3].result.log_se - 0.03 / 1.4).abs() < 1e-12);
         assert_eq!(out[2].reference, "exact Owen variance, base 4");
+    }
+
+    #[test]
+    fn composed_q_art_is_also_judged_against_q_art() {
+        let row = |name: &str, mean: f64| VarianceRow {
+            scrambler: name.into(),
+            base: 4,
+            seeds: 8000,
+            levels: vec![1, 2, 3],
+            ratio: vec![Some(1.0), Some(1.0), Some(1.0)],
+            ratio_se: vec![Some(0.01), Some(0.01), Some(0.01)],
+            mean_ratio: vec![mean, 1.0],
+            mean_ratio_se: vec![0.01, 0.01],
+        };
+        let rows = vec![row("q-art-4", 1.0), row("q-art-4:compose=linear", 1.3)];
+        let curves = vec![
+            curve("q-art-4", 1.0, 0.005, 1000),
+            curve("q-art-4:compose=linear", 1.01, 0.005, 1000),
+            curve("owen-oracle:base=4", 1.0, 0.005, 1000),
+        ];
+        let out = equivalence_rows(&rows, &curves, 0.1, 0.05);
+        let direct: Vec<_> = out.iter().filter(|r| r.reference == "q-art-4").collect();
+        // Two means and three box levels (8000 seeds: level 3 has 8,000 expected hits), then
+        // two sizes × (joint + one pair) of D².
+        assert_eq!(direct.len(), 5 + 4, "{direct:?}");
+        assert!(direct
+            .iter()
+            .all(|r| r.scrambler == "q-art-4:compose=linear"));
+        let mean0 = direct
+            .iter()
+            .find(|r| r.statistic == "variance of the mean, dim 0")
+            .unwrap();
+        assert_eq!(mean0.result.verdict, EquivalenceVerdict::Different);
+        assert!((mean0.result.ratio - 1.3).abs() < 1e-12);
+        let joint = direct
+            .iter()
+            .find(|r| r.statistic == "D² joint 16-D")
+            .unwrap();
+        assert_eq!(joint.result.verdict, EquivalenceVerdict::Equivalent);
+        // Against Owen too.
+        assert!(out.iter().any(
+            |r| r.scrambler == "q-art-4:compose=linear" && r.reference == "owen-oracle:base=4"
+        ));
     }
 }

@@ -489,12 +489,14 @@ pub fn panel_grid(
 
 /// All pairs of `dims` coordinates as a matrix: cell (row i, column j) for i < j shows the
 /// scatter of coordinates (i, j), cell (j, i) below the diagonal its power spectrum, with the
-/// grey-scale key at the right. `scatter(i, j)` gives the points of a pair.
+/// grey-scale key at the right. `scatter(i, j)` gives the points of a pair and `spectrum(i, j)`
+/// its spectrum on the (2·`max_freq` + 1)² grid (one realisation's, or a mean over seeds).
 pub fn pair_matrix(
     path: &Path,
     title: &str,
     dims: usize,
     scatter: &dyn Fn(usize, usize) -> Vec<[f64; 2]>,
+    spectrum: &dyn Fn(usize, usize) -> Vec<f64>,
     max_freq: usize,
 ) -> Result<(), FigureError> {
     register_fonts();
@@ -527,7 +529,7 @@ pub fn pair_matrix(
                 &format!("dims {i},{j}"),
                 &Panel::Scatter(pts.clone()),
             )?;
-            let values = crate::spectrum::power_spectrum(&pts, max_freq);
+            let values = spectrum(i, j);
             draw_panel(
                 &at(j, i),
                 &format!("spectrum {i},{j}"),

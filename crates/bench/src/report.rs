@@ -13,7 +13,7 @@ use crate::figures::{
 };
 use crate::harness::{methods_for, run_method, HarnessConfig, HarnessError, Method, MethodResult};
 use crate::integrands::{standard_families, Family, Smoothness};
-use crate::spectrum::power_spectrum;
+use crate::spectrum::mean_power_spectrum;
 pub use crate::speed::{measure_speed, SpeedRow};
 use gartowen::core::Registry;
 use gartowen::discrepancy::expected::expected_l2star_random;
@@ -22,6 +22,9 @@ use gartowen::verify::{verify, Level, Verdict};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
+
+/// Seeds whose periodograms Figure 1 averages.
+pub const FIGURE1_SEEDS: u64 = 16;
 
 /// The report's JSON schema name and version.
 pub const REPORT_SCHEMA: &str = "gartowen-report";
@@ -302,16 +305,18 @@ pub fn build_report(
     progress(methods.len() + 2, total, "randomization quality");
     let discrepancy = discrepancy_curves(registry, config.quick);
     progress(total, total, "discrepancy curves");
-    let with_base: Vec<(String, u32)> = speed
+    let mut with_base: Vec<(String, u32)> = speed
         .iter()
         .map(|s| (s.scrambler.clone(), s.base))
         .collect();
+    // The Q-ART paper's variant, judged against translation-only Q-ART as well as Owen.
+    with_base.push(("q-art-4:compose=linear".into(), 4));
     let owen_variance = crate::fidelity::variance_ratios(
         registry,
         &with_base,
         // Enough seeds in the full report for the equivalence verdicts to reach level 1 of
         // base 256 (2,000 expected hits; `owen_equivalence::MIN_EXPECTED_HITS`).
-        if config.quick { 500 } else { 8000 },
+        if config.quick { 200 } else { 8000 },
     );
     let tradeoff = crate::tradeoff::measure_tradeoff(config.quick);
     let equivalence = crate::equivalence::equivalence_rows(
@@ -554,51 +559,72 @@ pub fn write_figures(
         .map_err(fig)?;
         files.push(name);
     }
-    // Figure 1 (the paper's): every one of the 28 pairs of the first 8 dimensions at N = 256,
-    // one matrix per method (scatter above the diagonal, spectrum below, grey key).
-    for (label, request) in [
+    // Figure 1 (the paper's): every one of the 28 pairs of the first 8 dimensions at N = 256
+    // and 512, one matrix per method (scatter of seed 1 above the diagonal, the mean
+    // periodogram over FIGURE1_SEEDS seeds below, grey key), then the consecutive pairs
+    // (j, j+1) side by side across methods. One realisation's spectrum is noise.
+    let methods = [
         ("unscrambled", "none"),
         ("ArtOwen2", "art-owen-2"),
         ("ArtOwen16P", "art-owen-16p"),
-    ] {
-        let n = 256;
-        let w = sz16_words(registry, request, 8, n, 1);
-        let value = |i: usize, j: usize| w[i * 8 + j] as f64 * 2f64.powi(-32);
-        let name = format!("figure1_sz16_n{n}_pairs_{}.png", file_stem(request));
-        pair_matrix(
-            &dir.join(&name),
-            &format!("Figure 1: sz16, {label}, N = {n}: all 28 pairs of dims 0..7"),
-            8,
-            &|a, b| (0..n).map(|i| [value(i, a), value(i, b)]).collect(),
-            24,
-        )
-        .map_err(fig)?;
-        files.push(name);
-    }
-    // Consecutive pairs (j, j+1) side by side across methods, at two sizes.
+    ];
     for n in [256usize, 512] {
         let pairs: Vec<[usize; 2]> = (0..7).map(|j| [j, j + 1]).collect();
         let mut rows = Vec::new();
-        for (label, request) in [
-            ("unscrambled", "none"),
-            ("ArtOwen2", "art-owen-2"),
-            ("ArtOwen16P", "art-owen-16p"),
-        ] {
-            let w = sz16_words(registry, request, 8, n, 1);
-            let value = |i: usize, j: usize| w[i * 8 + j] as f64 * 2f64.powi(-32);
-            let sets: Vec<Vec<[f64; 2]>> = pairs
-                .iter()
-                .map(|p| (0..n).map(|i| [value(i, p[0]), value(i, p[1])]).collect())
+        for (label, request) in methods {
+            // The unscrambled set is the same for every seed.
+            let seeds = if request == "none" { 1 } else { FIGURE1_SEEDS };
+            let sets: Vec<Vec<u64>> = (1..=seeds)
+                .map(|seed| sz16_words(registry, request, 8, n, seed))
                 .collect();
+            let pair_sets = |a: usize, b: usize| -> Vec<Vec<[f64; 2]>> {
+                sets.iter()
+                    .map(|w| {
+                        let value = |i: usize, j: usize| w[i * 8 + j] as f64 * 2f64.powi(-32);
+                        (0..n).map(|i| [value(i, a), value(i, b)]).collect()
+                    })
+                    .collect()
+            };
+            // Every pair's mean spectrum once: the matrix and the consecutive pairs share them.
+            let spectra: Vec<Vec<Vec<f64>>> = (0..8)
+                .map(|a| {
+                    (0..8)
+                        .map(|b| {
+                            if a < b {
+                                mean_power_spectrum(&pair_sets(a, b), 24)
+                            } else {
+                                Vec::new()
+                            }
+                        })
+                        .collect()
+                })
+                .collect();
+            let name = format!("figure1_sz16_n{n}_pairs_{}.png", file_stem(request));
+            pair_matrix(
+                &dir.join(&name),
+                &format!(
+                    "Figure 1: sz16, {label}, N = {n}: all 28 pairs of dims 0..7 (spectra: mean of {seeds} seeds)"
+                ),
+                8,
+                &|a, b| pair_sets(a, b).swap_remove(0),
+                &|a, b| spectra[a][b].clone(),
+                24,
+            )
+            .map_err(fig)?;
+            files.push(name);
             rows.push((
                 format!("{label} points"),
-                sets.iter().map(|s| Panel::Scatter(s.clone())).collect(),
+                pairs
+                    .iter()
+                    .map(|p| Panel::Scatter(pair_sets(p[0], p[1]).swap_remove(0)))
+                    .collect(),
             ));
             rows.push((
                 format!("{label} spectrum"),
-                sets.iter()
-                    .map(|s| Panel::Spectrum {
-                        values: power_spectrum(s, 24),
+                pairs
+                    .iter()
+                    .map(|p| Panel::Spectrum {
+                        values: spectra[p[0]][p[1]].clone(),
                         max_freq: 24,
                     })
                     .collect(),
@@ -607,7 +633,9 @@ pub fn write_figures(
         let name = format!("figure1_sz16_n{n}.png");
         panel_grid(
             &dir.join(&name),
-            &format!("Figure 1: sz16, first 8 dimensions, N = {n} (spectra |f| ≤ 24, log grey)"),
+            &format!(
+                "Figure 1: sz16, first 8 dimensions, N = {n} (spectra |f| ≤ 24, log grey, mean of {FIGURE1_SEEDS} seeds)"
+            ),
             &pairs
                 .iter()
                 .map(|p| format!("dims {},{}", p[0], p[1]))
@@ -715,12 +743,27 @@ pub fn write_figures(
                 .collect(),
         })
         .collect();
-    loglog_lines(
+    let spread_bands: Vec<Vec<(f64, f64)>> = report
+        .discrepancy
+        .iter()
+        .map(|c| {
+            c.pair_spread()
+                .iter()
+                .zip(c.pair_spread_se())
+                .map(|(&r, se)| {
+                    let se = if se.is_finite() { se } else { 0.0 };
+                    ((r - 2.0 * se).max(1.0), r + 2.0 * se)
+                })
+                .collect()
+        })
+        .collect();
+    loglog_lines_banded(
         &dir.join("figure2_spread.png"),
-        "Figure 2c: max / min over pairs (0, j) of the mean 2-D D² (1 = every pair alike)",
+        "Figure 2c: max / min over pairs (0, j) of the mean 2-D D² (1 = every pair alike; ±2 SE)",
         "N (points)",
         "max / min",
         &spread,
+        &spread_bands,
         &[],
     )
     .map_err(fig)?;
@@ -883,11 +926,13 @@ pub fn markdown(report: &Report, figures: &[String], regressions: Option<&[Regre
     md += &crate::equivalence::markdown(&report.equivalence);
     md += "\n## Discrepancy (Figure 2 data): mean L2-star D² of sz16\n\nMeans over the seeds \
            shown, ± 2 standard errors; two methods whose intervals overlap are not told apart by \
-           this many seeds. The spread is max / min over the 15 pairs (0, j) of the mean 2-D D².\n\n\
+           this many seeds. The spread is max / min over the 15 pairs (0, j) of the mean 2-D D², ± 2 SE \
+           (delta method on the two extreme pairs).\n\n\
            | scrambler | seeds | N | joint 16-D (± 2 SE) | mean over pairs (0,j) | spread |\n\
            |---|---|---|---|---|---|\n";
     for c in &report.discrepancy {
         let spread = c.pair_spread();
+        let spread_se = c.pair_spread_se();
         for (k, n) in c.n.iter().enumerate() {
             let mean = c.pair_values[k].iter().sum::<f64>() / c.pair_values[k].len() as f64;
             let se = c
@@ -895,13 +940,14 @@ pub fn markdown(report: &Report, figures: &[String], regressions: Option<&[Regre
                 .get(k)
                 .map_or(String::new(), |se| format!(" ± {:.1e}", 2.0 * se));
             md += &format!(
-                "| {} | {} | {} | {:.4e}{se} | {:.4e} | {:.2} |\n",
+                "| {} | {} | {} | {:.4e}{se} | {:.4e} | {:.2} ± {:.2} |\n",
                 c.scrambler,
                 c.seeds_at(k),
                 n,
                 c.joint[k],
                 mean,
-                spread[k]
+                spread[k],
+                2.0 * spread_se[k]
             );
         }
     }

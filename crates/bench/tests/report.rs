@@ -167,6 +167,15 @@ fn pair_spread_is_max_over_min_per_size() {
         seeds_per_n: vec![],
     };
     assert_eq!(c.pair_spread(), vec![4.0, 1.0]);
+    // Its standard error by the delta method on the extreme pairs (8 ± 0.4 over 2 ± 0.1).
+    let mut c = c;
+    c.pair_se = vec![vec![0.1, 0.4, 0.3], vec![0.0; 3]];
+    let se = c.pair_spread_se();
+    assert!(
+        (se[0] - 4.0 * (0.05f64.powi(2) * 2.0).sqrt()).abs() < 1e-12,
+        "{se:?}"
+    );
+    assert_eq!(se[1], 0.0);
 }
 
 /// The report's variance ratios: Owen's oracle sits at 1 within its error at every level, the

@@ -41,6 +41,7 @@ fn quick_report_writes_figures_and_the_baseline_gate_works() {
         "figure1_sz16_n256_pairs_none.png",
         "figure1_sz16_n256_pairs_art-owen-2.png",
         "figure1_sz16_n256_pairs_art-owen-16p.png",
+        "figure1_sz16_n512_pairs_art-owen-16p.png",
         "figure2_joint.png",
         "figure2_pairs_art-owen-2.png",
         "figure2_pairs_art-owen-16p.png",
@@ -67,6 +68,9 @@ fn quick_report_writes_figures_and_the_baseline_gate_works() {
     );
     assert!(md.contains("| art-owen-8p | 8 | 1024 | 4.000 | 1024 | 0.91 (about 1) |"));
     assert!(md.contains("## Equivalence to full-tree Owen"));
+    // Figure 2 at non-powers of two as well, the spread with its standard error.
+    // (N = 100: 2^17 / 100² = 13, raised to the quick floor of 16 seeds.)
+    assert!(md.contains("| art-owen-16p | 16 | 100 |"), "{md}");
     let report: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(path("a/report.json")).unwrap()).unwrap();
     let verdicts = report["equivalence"].as_array().unwrap();
@@ -79,7 +83,7 @@ fn quick_report_writes_figures_and_the_baseline_gate_works() {
     ] {
         assert!(
             verdicts.iter().any(|v| v["scrambler"] == variant
-                && v["statistic"] == "variance level 1"
+                && v["statistic"] == "variance of the mean, dim 0"
                 && ["equivalent", "different", "inconclusive"]
                     .contains(&v["result"]["verdict"].as_str().unwrap())),
             "{variant} has no variance verdict"
