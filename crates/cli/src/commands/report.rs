@@ -27,7 +27,7 @@ use std::process::ExitCode;
 ///
 /// Examples:
 ///   gartowen report --out report --quick           (under a minute on 2 cores)
-///   gartowen report --out report                   (the full report, a few minutes)
+///   gartowen report --out report                   (the full report, about 13 min on 2 cores)
 ///   gartowen report --out new --baseline old/report.json
 #[derive(Args, Debug)]
 #[command(verbatim_doc_comment)]
