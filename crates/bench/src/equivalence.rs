@@ -50,35 +50,39 @@ fn art_base(request: &str) -> Option<u32> {
     variant_of(request.split(':').next()?).map(|v| 1 << v.q())
 }
 
+/// A variance row's judgeable statistics (name, ratio to Owen, its standard error): the
+/// coordinate means, and the box levels with at least [`MIN_EXPECTED_HITS`] expected hits at
+/// `seeds` seeds.
+fn row_statistics(row: &VarianceRow, seeds: u64) -> Vec<(String, f64, f64)> {
+    let q = row.base.trailing_zeros();
+    let means = row
+        .mean_ratio
+        .iter()
+        .zip(&row.mean_ratio_se)
+        .enumerate()
+        .map(|(dim, (r, se))| (format!("variance of the mean, dim {dim}"), *r, *se));
+    let boxes = row.levels.iter().enumerate().filter_map(move |(k, level)| {
+        if expected_hits(seeds, q, *level) < MIN_EXPECTED_HITS {
+            return None;
+        }
+        let (Some(Some(r)), Some(Some(se))) = (row.ratio.get(k), row.ratio_se.get(k)) else {
+            return None;
+        };
+        Some((format!("variance box level {level}"), *r, *se))
+    });
+    means.chain(boxes).collect()
+}
+
 fn variance_candidates(rows: &[VarianceRow]) -> Vec<Candidate> {
     let mut out = Vec::new();
     for row in rows.iter().filter(|r| art_base(&r.scrambler).is_some()) {
-        let q = row.base.trailing_zeros();
-        for (dim, (ratio, se)) in row.mean_ratio.iter().zip(&row.mean_ratio_se).enumerate() {
+        for (statistic, ratio, se) in row_statistics(row, row.seeds) {
             out.push(Candidate {
                 scrambler: row.scrambler.clone(),
                 reference: format!("exact Owen variance, base {}", row.base),
-                statistic: format!("variance of the mean, dim {dim}"),
+                statistic,
                 n: None,
-                ratio: *ratio,
-                log_se: se / ratio,
-                seeds: row.seeds,
-            });
-        }
-        for (k, level) in row.levels.iter().enumerate() {
-            if expected_hits(row.seeds, q, *level) < MIN_EXPECTED_HITS {
-                continue;
-            }
-            let (Some(Some(ratio)), Some(Some(se))) = (row.ratio.get(k), row.ratio_se.get(k))
-            else {
-                continue;
-            };
-            out.push(Candidate {
-                scrambler: row.scrambler.clone(),
-                reference: format!("exact Owen variance, base {}", row.base),
-                statistic: format!("variance box level {level}"),
-                n: None,
-                ratio: *ratio,
+                ratio,
                 log_se: se / ratio,
                 seeds: row.seeds,
             });
@@ -171,8 +175,13 @@ fn direct_variance_candidates(rows: &[VarianceRow]) -> Vec<Candidate> {
         ) else {
             continue;
         };
-        let mut push = |statistic: String, ra: f64, sa: f64, rb: f64, sb: f64| {
-            if let Some((ratio, log_se)) = ratio_of_means(ra, sa, rb, sb) {
+        let seeds = a.seeds.min(b.seeds);
+        let theirs = row_statistics(b, seeds);
+        for (statistic, ra, sa) in row_statistics(a, seeds) {
+            let Some((_, rb, sb)) = theirs.iter().find(|(s, _, _)| *s == statistic) else {
+                continue;
+            };
+            if let Some((ratio, log_se)) = ratio_of_means(ra, sa, *rb, *sb) {
                 out.push(Candidate {
                     scrambler: name.into(),
                     reference: reference.into(),
@@ -180,31 +189,8 @@ fn direct_variance_candidates(rows: &[VarianceRow]) -> Vec<Candidate> {
                     n: None,
                     ratio,
                     log_se,
-                    seeds: a.seeds.min(b.seeds),
+                    seeds,
                 });
-            }
-        };
-        for dim in 0..a.mean_ratio.len().min(b.mean_ratio.len()) {
-            push(
-                format!("variance of the mean, dim {dim}"),
-                a.mean_ratio[dim],
-                a.mean_ratio_se[dim],
-                b.mean_ratio[dim],
-                b.mean_ratio_se[dim],
-            );
-        }
-        let q = a.base.trailing_zeros();
-        for (k, level) in a.levels.iter().enumerate() {
-            if expected_hits(a.seeds.min(b.seeds), q, *level) < MIN_EXPECTED_HITS {
-                continue;
-            }
-            if let (Some(Some(ra)), Some(Some(sa)), Some(Some(rb)), Some(Some(sb))) = (
-                a.ratio.get(k),
-                a.ratio_se.get(k),
-                b.ratio.get(k),
-                b.ratio_se.get(k),
-            ) {
-                push(format!("variance box level {level}"), *ra, *sa, *rb, *sb);
             }
         }
     }
