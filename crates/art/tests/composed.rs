@@ -115,3 +115,12 @@ fn on_words_with_one_nonzero_digit_it_differs_from_q_art_at_that_digit_only() {
         }
     }
 }
+
+#[test]
+fn table_bytes_count_the_record_and_the_matrix_pairs() {
+    // The Q-ART record for 64-bit words, 256 × (3 + 64) bits = 2144 bytes, plus ψ and ψ⁻¹ as
+    // matrices (16 bytes each: a size byte and the packed rows, padded) per symbol.
+    let c = QArtComposed::new(256, 1).unwrap();
+    assert_eq!(std::mem::size_of::<gartowen_core::Gf2Matrix>(), 16);
+    assert_eq!(c.table_bytes(), 2144 + 256 * 2 * 16);
+}

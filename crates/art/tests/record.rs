@@ -138,3 +138,45 @@ fn a_record_differs_across_seeds_and_variants() {
     assert!((0..256).any(|s| a.psi(s) != a.psi(0)));
     assert!((0..100u64).any(|x| a.scramble(x << 20, 0) != b.scramble(x << 20, 0)));
 }
+
+#[test]
+fn linear_psi_is_given_as_its_matrix() {
+    // Q-ART and every matrix variant: the matrix applies as ψ does, digit by digit; the
+    // permutation variants have no matrix.
+    for variant in [ArtVariant::QArt4]
+        .into_iter()
+        .chain((1..=8).map(ArtVariant::Matrix))
+    {
+        let record = ArtRecord::draw(variant, 44, 6, Width::W32).unwrap();
+        let q = variant.q();
+        for s in 0..44u32 {
+            let m = record.psi_matrix(s).unwrap();
+            assert_eq!(m.size(), q);
+            for d in 0..1u32 << q {
+                assert_eq!(
+                    m.apply(d),
+                    record.psi_apply(s, d),
+                    "{variant:?} s={s} d={d}"
+                );
+            }
+        }
+        // Not every symbol's matrix is the identity (a decoder returning I would pass above
+        // only if ψ were the identity too).
+        assert!(
+            (0..44).any(|s| record.psi_matrix(s).unwrap().packed()
+                != gartowen_core::Gf2Matrix::identity(q).unwrap().packed())
+                || q == 1
+        );
+    }
+    for variant in [
+        ArtVariant::ArtOwen2,
+        ArtVariant::ArtOwen8P,
+        ArtVariant::ArtOwen16P,
+        ArtVariant::Translation(3),
+    ] {
+        assert!(ArtRecord::draw(variant, 44, 6, Width::W32)
+            .unwrap()
+            .psi_matrix(0)
+            .is_none());
+    }
+}
