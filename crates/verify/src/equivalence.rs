@@ -196,6 +196,15 @@ mod tests {
         assert!((e.tost_interval[0] - 0.9709).abs() < 1e-3, "{e:?}");
         assert!((e.tost_interval[1] - 1.0716).abs() < 1e-3, "{e:?}");
         assert_eq!(e.words(), "equivalent within ±10%");
+        assert_eq!(e.seeds_needed, None, "a decided verdict names no seeds");
+        assert!((e.z - 1.02f64.ln() / 0.03).abs() < 1e-12);
+        // Detectable with 80% power: exp((z_{0.975} + z_{0.8})·se) − 1.
+        assert!((e.detectable - ((1.959964 + 0.841621) * 0.03f64).exp() + 1.0).abs() < 1e-5);
+        let d = judge(1.5, 0.03, 1000, settings(1));
+        assert_eq!(
+            (d.verdict, d.seeds_needed),
+            (EquivalenceVerdict::Different, None)
+        );
         // The same se with the estimate near the margin: the interval pokes out.
         let near = judge(1.08, 0.03, 1000, settings(1));
         assert_eq!(near.verdict, EquivalenceVerdict::Different); // |ln 1.08|/0.03 = 2.57 > 1.96
@@ -210,6 +219,21 @@ mod tests {
         );
         assert_eq!(
             judge(1.5, 0.03, 1000, settings(20)).verdict,
+            EquivalenceVerdict::Different
+        );
+        // Below 1: the lower bound fails the TOST (ln 0.92 − 1.645·0.03 < ln 0.9), |z| = 2.78.
+        assert_eq!(
+            judge(0.92, 0.03, 1000, settings(1)).verdict,
+            EquivalenceVerdict::Different
+        );
+        assert_eq!(
+            judge(0.95, 0.02, 1000, settings(1)).verdict,
+            EquivalenceVerdict::Equivalent
+        );
+        // The difference level is α/2 two-sided for one statistic: |z| = 2.05 > 1.96 differs.
+        let z205 = (2.05f64 * 0.03).exp();
+        assert_eq!(
+            judge(z205, 0.03, 1000, settings(1)).verdict,
             EquivalenceVerdict::Different
         );
         // Garbage in: inconclusive, nothing named.

@@ -445,4 +445,68 @@ mod tests {
         assert_eq!(c.verdict, Verdict::Fail);
         assert!(c.detail.contains("refused"), "{}", c.detail);
     }
+
+    #[test]
+    fn hits_variances_and_seed_defaults_are_as_documented() {
+        assert_eq!(expected_hits(1000, 2, 3), 1000.0); // 1000 · 64 / 4^3
+        assert_eq!(expected_hits(10_000, 4, 2), 2500.0); // 10,000 · 64 / 16^2
+                                                         // [0, 0, 0, 4]: s² = 12/3 = 4, m₄ = 84/4 = 21, SE = √((21 − 16)/4 + 2·16/12).
+        let (s2, se) = sample_variance(&[0.0, 0.0, 0.0, 4.0]);
+        assert_eq!(s2, 4.0);
+        assert!((se - (1.25f64 + 32.0 / 12.0).sqrt()).abs() < 1e-12);
+        assert_eq!(
+            [Level::Quick, Level::Full, Level::Exhaustive].map(equivalence_seeds),
+            [10_000, 40_000, 100_000]
+        );
+    }
+
+    #[test]
+    fn rare_boxes_get_no_ratio_and_standard_errors_scale_with_the_seeds() {
+        // Base 16 with 20 seeds: level 1 expects 20·64/16 = 80 hits (a ratio), level 3 0.3
+        // (none). Base 4 with 4,000 seeds: the level-1 ratio's SE is near √((2 + 1/λ)/R)
+        // with λ = 16 hits per seed, about 0.023.
+        let b16 = PowerOfTwoBase::B16;
+        let r = variance_ratios(
+            oracle(b16, OwenVariant::Uniform).as_ref(),
+            b16,
+            Width::W32,
+            20,
+        )
+        .unwrap();
+        assert!(r.boxes[0].ratio.is_some() && r.boxes[2].ratio.is_none());
+        assert_eq!(
+            r.boxes.iter().map(|l| l.level).collect::<Vec<_>>(),
+            [1, 2, 3]
+        );
+        let b4 = PowerOfTwoBase::B4;
+        let r = variance_ratios(
+            oracle(b4, OwenVariant::Uniform).as_ref(),
+            b4,
+            Width::W32,
+            4000,
+        )
+        .unwrap();
+        let se = r.boxes[0].ratio_se.unwrap();
+        assert!((0.01..0.04).contains(&se), "{se}");
+        assert!(
+            r.means.iter().all(|m| (0.01..0.04).contains(&m.ratio_se)),
+            "{r:?}"
+        );
+        // 64-bit instances read the points from the top half, boxes included.
+        let wide = variance_ratios(
+            oracle(b4, OwenVariant::Uniform).as_ref(),
+            b4,
+            Width::W64,
+            2000,
+        )
+        .unwrap();
+        for l in &wide.boxes {
+            let (ratio, se) = (l.ratio.unwrap(), l.ratio_se.unwrap());
+            assert!(
+                (ratio - 1.0).abs() < 4.0 * se,
+                "level {}: {ratio} ± {se}",
+                l.level
+            );
+        }
+    }
 }
