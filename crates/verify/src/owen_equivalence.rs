@@ -509,4 +509,34 @@ mod tests {
             );
         }
     }
+
+    #[test]
+    fn statistics_are_judged_on_the_log_scale_with_their_names() {
+        let ratios = VarianceRatios {
+            boxes: vec![
+                LevelVariance {
+                    level: 1,
+                    ratio: Some(2.0),
+                    ratio_se: Some(0.1),
+                },
+                LevelVariance {
+                    level: 3,
+                    ratio: Some(1.0),
+                    ratio_se: Some(0.01),
+                },
+            ],
+            means: vec![MeanVariance {
+                dim: 0,
+                ratio: 0.5,
+                ratio_se: 0.01,
+            }],
+        };
+        // Base 4, 1000 seeds: level 1 expects 16,000 hits (judged), level 3 1,000 (not).
+        let judged = judge_statistics(&ratios, 2, 1000, 0.1);
+        let names: Vec<&str> = judged.iter().map(|(n, _)| n.as_str()).collect();
+        assert_eq!(names, ["mean dim 0", "box level 1"]);
+        assert!((judged[0].1.log_se - 0.02).abs() < 1e-12);
+        assert!((judged[1].1.log_se - 0.05).abs() < 1e-12);
+        assert_eq!(judged[1].1.settings.family, 2);
+    }
 }
