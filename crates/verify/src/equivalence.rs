@@ -275,13 +275,18 @@ mod tests {
             EquivalenceVerdict::Different
         );
         assert_eq!(e.words(), format!("inconclusive: about {k} seeds needed"));
+        // An estimate a hair inside the margin needs more seeds than are named.
+        let edge = judge(1.1 * (-1e-6f64).exp(), 0.05, 100, settings(1));
+        assert_eq!(edge.verdict, EquivalenceVerdict::Inconclusive);
+        assert_eq!(edge.words(), "inconclusive: more than 1e9 seeds needed");
     }
 
     #[test]
     fn ratio_of_means_uses_the_delta_method() {
-        let (r, se) = ratio_of_means(2.0, 0.2, 1.0, 0.05).unwrap();
-        assert_eq!(r, 2.0);
+        let (r, se) = ratio_of_means(3.0, 0.3, 2.0, 0.1).unwrap();
+        assert_eq!(r, 1.5);
         assert!((se - (0.01f64 + 0.0025).sqrt()).abs() < 1e-12);
+        assert!(ratio_of_means(1.0, 0.1, 0.0, 0.1).is_none());
         assert!(ratio_of_means(0.0, 0.1, 1.0, 0.1).is_none());
         assert!(ratio_of_means(1.0, 0.1, -1.0, 0.1).is_none());
         assert!(EquivalenceSettings::new(0.0, 0.05, 1).is_none());
