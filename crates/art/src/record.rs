@@ -4,7 +4,7 @@
 //! Per symbol the record holds one entry of `psi_bits + code_bits` bits (entries back to back
 //! in a stream of u64 words, stream bit i = bit i mod 64 of word i / 64; an entry may straddle
 //! two words). The grammar's child table is separate: it is static and shared by every seed.
-//! The dimension keys are hashes of (seed, dimension) and take no storage ([`crate::dims`]).
+//! The dimension keys are hashes of (seed, dimension) and take no storage (`dims.rs`).
 //!
 //! | variant | ψ field | code field |
 //! |---|---|---|

@@ -155,7 +155,7 @@ fn curve_requests(quick: bool) -> Vec<(&'static str, usize)> {
 }
 
 /// Figure 2 data: ART against full-tree Owen scrambling of sz16 in the bases of
-/// [`curve_requests`], with [`curve_seeds`] seeds per size.
+/// `curve_requests`, with [`curve_seeds`] seeds per size.
 pub fn discrepancy_curves(registry: &Registry, quick: bool) -> Vec<DiscrepancyCurve> {
     let pairs = curves::pair_list(16, false);
     curve_requests(quick)

@@ -43,10 +43,10 @@ pub fn expected_l2star_owen(net: Points) -> f64 {
     -(3f64.powi(-(d as i32))) + 2f64.powi(-(d as i32)) / n as f64 + sum / n as f64
 }
 
-/// E[D*²] for `n` independent uniform points in [0,1)^`dims` (the random-points baseline of
-/// the paper's figures): every point is uniform, and two distinct points are independent, so
-/// E[Π(1 − max)] = 3^-d off the diagonal and 2^-d on it, which leaves
-/// E[D*²] = (2^-d − 3^-d) / N. `n` = 0 gives infinity.
+/// E\[D*²\] for `n` independent uniform points in \[0,1)^`dims` (the random-points baseline
+/// of the paper's figures): every point is uniform, and two distinct points are independent,
+/// so E\[Π(1 − max)\] = 3^-d off the diagonal and 2^-d on it, which leaves
+/// E\[D*²\] = (2^-d − 3^-d) / N. `n` = 0 gives infinity.
 ///
 /// ```
 /// use gartowen_discrepancy::expected::expected_l2star_random;
