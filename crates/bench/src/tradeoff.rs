@@ -8,6 +8,7 @@
 //! this run; compare ratios, not absolute times, across machines).
 
 use crate::fidelity::VarianceRow;
+use crate::speed::median;
 use gartowen::art::record::PAPER_RECORD_RATIOS;
 use gartowen::art::registry::DEFAULT_SYMBOLS;
 use gartowen::art::{ArtOwen, ArtRecord, ArtVariant};
@@ -42,15 +43,6 @@ pub struct TradeoffRow {
     pub ns_record: f64,
     /// ns per 32-bit coordinate on the batch path (median over rounds).
     pub ns_batch: f64,
-}
-
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    match v.len() {
-        0 => f64::NAN,
-        n if n % 2 == 1 => v[n / 2],
-        n => 0.5 * (v[n / 2 - 1] + v[n / 2]),
-    }
 }
 
 /// ns per word of `passes` passes of `f` over `words` (dimension = index mod 8).
@@ -104,8 +96,8 @@ pub fn measure_tradeoff_rounds(passes: u32, rounds: usize) -> Vec<TradeoffRow> {
                     .map(|(_, r, _)| *r),
                 child_table_bytes: art.grammar().table_bytes(),
                 acceleration_bytes: art.acceleration_bytes(),
-                ns_record: median(ns_record),
-                ns_batch: median(ns_batch),
+                ns_record: median(&ns_record),
+                ns_batch: median(&ns_batch),
                 scrambler: name,
             }
         })
@@ -197,12 +189,5 @@ mod tests {
             assert!(r.ns_record > 0.0 && r.ns_batch > 0.0, "{r:?}");
             assert!(r.acceleration_bytes > r.record_bytes, "{r:?}");
         }
-    }
-
-    #[test]
-    fn median_of_odd_even_and_empty() {
-        assert_eq!(median(vec![3.0, 1.0, 2.0]), 2.0);
-        assert_eq!(median(vec![4.0, 1.0, 2.0, 3.0]), 2.5);
-        assert!(median(vec![]).is_nan());
     }
 }

@@ -26,6 +26,16 @@ pub fn width_from_bits(bits: u32) -> Result<Width, CliError> {
     }
 }
 
+/// An equivalence margin δ on a ratio (`--margin` of `verify` and `report`), 0 < δ < 1.
+pub fn parse_margin(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(m) if m > 0.0 && m < 1.0 => Ok(m),
+        _ => Err(format!(
+            "'{s}' is not a margin in (0, 1), e.g. 0.1 for ±10%"
+        )),
+    }
+}
+
 /// The `--claim` option, parsed (None when absent).
 pub fn parse_claim(text: &Option<String>) -> Result<Option<Claim>, CliError> {
     text.as_deref()

@@ -47,17 +47,8 @@ pub struct ReportArgs {
     /// Equivalence margin δ on ratios: an ART variant is "equivalent" to Owen on a statistic
     /// when the 90% interval of the ratio lies inside [1 − δ, 1 + δ] (0 < δ < 1).
     #[arg(long, default_value_t = gartowen::battery::equivalence::DEFAULT_MARGIN,
-          value_parser = parse_margin)]
+          value_parser = super::parse_margin)]
     pub margin: f64,
-}
-
-fn parse_margin(s: &str) -> Result<f64, String> {
-    match s.parse::<f64>() {
-        Ok(m) if m > 0.0 && m < 1.0 => Ok(m),
-        _ => Err(format!(
-            "'{s}' is not a margin in (0, 1), e.g. 0.1 for ±10%"
-        )),
-    }
 }
 
 fn cli_error(e: ReportError) -> CliError {

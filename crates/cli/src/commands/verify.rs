@@ -135,22 +135,13 @@ pub struct VerifyArgs {
     pub equivalent_to: Option<String>,
     /// Equivalence margin on the variance ratio (0 < margin < 1).
     #[arg(long, default_value_t = gartowen::battery::equivalence::DEFAULT_MARGIN,
-          value_parser = parse_margin, requires = "equivalent_to")]
+          value_parser = super::parse_margin, requires = "equivalent_to")]
     pub margin: f64,
     /// Seeds of the equivalence check (default: 1000 quick, 10000 full, 50000 exhaustive;
     /// at most 1000000).
     #[arg(long, value_parser = clap::value_parser!(u64).range(2..=1_000_000),
           requires = "equivalent_to")]
     pub equivalence_seeds: Option<u64>,
-}
-
-fn parse_margin(s: &str) -> Result<f64, String> {
-    match s.parse::<f64>() {
-        Ok(m) if m > 0.0 && m < 1.0 => Ok(m),
-        _ => Err(format!(
-            "'{s}' is not a margin in (0, 1), e.g. 0.1 for ±10%"
-        )),
-    }
 }
 
 /// The seeds of the equivalence check at `level`.
