@@ -8,6 +8,7 @@ pub mod figures;
 pub mod harness;
 pub mod integrands;
 pub mod report;
+pub mod scene;
 pub mod spectrum;
 pub mod speed;
 pub mod tradeoff;

@@ -991,27 +991,41 @@ pub fn write_report(
     dir: &Path,
     baseline: Option<&Report>,
 ) -> Result<Vec<Regression>, ReportError> {
-    std::fs::create_dir_all(dir)
-        .map_err(|e| ReportError::Io(format!("cannot create {}: {e}", dir.display())))?;
+    let regressions = baseline.map(|b| compare(b, report));
+    write_staged(dir, |staging| {
+        stage_report(report, registry, staging, regressions.as_deref()).map_err(|e| match e {
+            ReportError::Io(m) => m,
+            other => other.to_string(),
+        })
+    })
+    .map_err(ReportError::Io)?;
+    Ok(regressions.unwrap_or_default())
+}
+
+/// Creates `dir`, lets `stage` write files into [`staging_dir`] (returning their names), and
+/// moves them into `dir` only when all are complete, so a write error (a full disk) leaves
+/// `dir` as it was, an earlier report in it intact, and no staging folder behind.
+pub fn write_staged(
+    dir: &Path,
+    stage: impl FnOnce(&Path) -> Result<Vec<String>, String>,
+) -> Result<(), String> {
+    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
     let staging = staging_dir(dir);
     // A staging folder left by a killed run of this pid would only hold stale files.
     let _ = std::fs::remove_dir_all(&staging);
     std::fs::create_dir(&staging)
-        .map_err(|e| ReportError::Io(format!("cannot create {}: {e}", staging.display())))?;
-    let regressions = baseline.map(|b| compare(b, report));
-    let staged = stage_report(report, registry, &staging, regressions.as_deref());
-    let moved = staged.and_then(|names| {
+        .map_err(|e| format!("cannot create {}: {e}", staging.display()))?;
+    let moved = stage(&staging).and_then(|names| {
         // Renames within one folder need no space: once every file is staged, the report
         // cannot stop half-written.
         for name in &names {
-            std::fs::rename(staging.join(name), dir.join(name)).map_err(|e| {
-                ReportError::Io(format!("cannot write {}: {e}", dir.join(name).display()))
-            })?;
+            std::fs::rename(staging.join(name), dir.join(name))
+                .map_err(|e| format!("cannot write {}: {e}", dir.join(name).display()))?;
         }
         Ok(())
     });
     let _ = std::fs::remove_dir_all(&staging);
-    moved.map(|()| regressions.unwrap_or_default())
+    moved
 }
 
 /// The folder inside `dir` where [`write_report`] writes every file before moving them into

@@ -32,6 +32,7 @@ enum Command {
     Matrices(commands::matrices::MatricesArgs),
     List(commands::list::ListArgs),
     Report(commands::report::ReportArgs),
+    Scene(commands::scene::SceneArgs),
 }
 
 fn main() -> ExitCode {
@@ -47,6 +48,7 @@ fn main() -> ExitCode {
         Command::Matrices(a) => commands::matrices::run(a),
         Command::List(a) => commands::list::run(a),
         Command::Report(a) => commands::report::run(a),
+        Command::Scene(a) => commands::scene::run(a),
     };
     match result {
         Ok(code) => code,

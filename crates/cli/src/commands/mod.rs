@@ -7,6 +7,7 @@ pub mod inspect;
 pub mod list;
 pub mod matrices;
 pub mod report;
+pub mod scene;
 pub mod scramble;
 pub mod shards;
 pub mod sweep;
