@@ -129,6 +129,9 @@ pub struct Report {
     /// reports).
     #[serde(default)]
     pub equivalence: Vec<crate::equivalence::EquivalenceRow>,
+    /// The scene benchmark (absent in older reports).
+    #[serde(default)]
+    pub scene: Option<crate::scene::report::SceneReport>,
     /// Baseline thresholds.
     pub thresholds: Thresholds,
     /// Worker threads used.
@@ -292,7 +295,7 @@ pub fn build_report(
     if config.quick {
         methods = quick_methods(methods);
     }
-    let total = methods.len() + 3;
+    let total = methods.len() + 4;
     let mut results = Vec::with_capacity(methods.len());
     for (k, m) in methods.iter().enumerate() {
         results.push(run_method(registry, m, &families, &harness).map_err(ReportError::Harness)?);
@@ -304,7 +307,7 @@ pub fn build_report(
     let quality = measure_quality(registry, &requests);
     progress(methods.len() + 2, total, "randomization quality");
     let discrepancy = discrepancy_curves(registry, config.quick);
-    progress(total, total, "discrepancy curves");
+    progress(methods.len() + 3, total, "discrepancy curves");
     let mut with_base: Vec<(String, u32)> = speed
         .iter()
         .map(|s| (s.scrambler.clone(), s.base))
@@ -326,6 +329,18 @@ pub fn build_report(
         gartowen::battery::equivalence::DEFAULT_ALPHA,
     );
     let slopes = slope_rows(&results, &families);
+    let scene = crate::scene::report::run_scenes(
+        &crate::scene::report::ScenePlan {
+            scenes: crate::scene::all_scenes(),
+            methods: crate::scene::measure::standard_methods(registry),
+            layouts: Vec::new(),
+            quick: config.quick,
+            seed: config.seed,
+        },
+        &|_, _, _| {},
+    )
+    .map_err(|e| ReportError::Harness(HarnessError::Method(e)))?;
+    progress(total, total, "scenes");
     Ok(Report {
         schema: REPORT_SCHEMA.into(),
         schema_version: REPORT_VERSION,
@@ -347,6 +362,7 @@ pub fn build_report(
         owen_variance,
         tradeoff,
         equivalence,
+        scene: Some(scene),
         threads: rayon::current_num_threads(),
         seconds: start.elapsed().as_secs_f64(),
     })
@@ -407,6 +423,22 @@ pub fn compare(baseline: &Report, now: &Report) -> Vec<Regression> {
                 }
             }
         }
+    }
+    if let (Some(old), Some(new)) = (&baseline.scene, &now.scene) {
+        out.extend(
+            crate::scene::report::compare_scenes(old, new)
+                .into_iter()
+                .map(|r| Regression {
+                    what: r.what,
+                    before: r.before,
+                    after: r.after,
+                    rule: format!(
+                        "RMSE grew by more than ×{} and {} standard errors",
+                        crate::scene::report::REGRESSION_FACTOR,
+                        crate::scene::report::REGRESSION_Z
+                    ),
+                }),
+        );
     }
     for s in &now.speed {
         if let Some(o) = baseline.speed.iter().find(|o| o.scrambler == s.scrambler) {
@@ -768,6 +800,11 @@ pub fn write_figures(
     )
     .map_err(fig)?;
     files.push("figure2_spread.png".into());
+    if let Some(scene) = &report.scene {
+        files.extend(
+            crate::scene::output::write_scene_figures(scene, dir).map_err(ReportError::Figure)?,
+        );
+    }
     Ok(files)
 }
 
@@ -951,8 +988,12 @@ pub fn markdown(report: &Report, figures: &[String], regressions: Option<&[Regre
             );
         }
     }
+    if let Some(scene) = &report.scene {
+        md += "\n## Scenes: does base-2^q decorrelation pay off in rendering?\n\n";
+        md += &crate::scene::output::scene_markdown(scene, figures, None, "###");
+    }
     md += "\n## Figures\n\n";
-    for f in figures {
+    for f in figures.iter().filter(|f| !f.starts_with("scene-")) {
         md += &format!("![{f}]({f})\n\n");
     }
     if let Some(r) = regressions {

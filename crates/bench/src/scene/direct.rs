@@ -138,7 +138,7 @@ impl Default for DirectScene {
     fn default() -> Self {
         DirectScene {
             room: Room::default(),
-            point: [0.35, 0.1, 0.0],
+            point: [0.5, 0.25, 0.0],
             radiance: 5.0,
             albedo: 0.8,
         }
@@ -187,7 +187,8 @@ mod tests {
         let p = [3.0, 3.0, 0.0];
         assert_eq!(room.direct_exact(p), room.light.projected_solid_angle(p));
         let sky = room.sky_exact(p);
-        let expect = PI - room.light.projected_solid_angle(p) - room.occluder.projected_solid_angle(p);
+        let expect =
+            PI - room.light.projected_solid_angle(p) - room.occluder.projected_solid_angle(p);
         assert!((sky - expect).abs() < 1e-15);
     }
 

@@ -98,8 +98,12 @@ pub fn image_figure(
     let draw = |col: i32, row: i32, caption: &str, color: &dyn Fn(usize) -> RGBColor| {
         let x0 = gap + col * (cell + gap);
         let y0 = top + row * (cell + label + gap) + label;
-        root.draw(&Text::new(caption.to_string(), (x0, y0 - label), font.clone()))
-            .map_err(fail)?;
+        root.draw(&Text::new(
+            caption.to_string(),
+            (x0, y0 - label),
+            font.clone(),
+        ))
+        .map_err(fail)?;
         for k in 0..side * side {
             // Row 0 of the image (lowest y) at the bottom, as the plane is seen from above.
             let (i, j) = ((k % side) as i32, (side - 1 - k / side) as i32);

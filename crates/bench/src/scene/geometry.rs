@@ -53,13 +53,13 @@ impl FlatPolygon {
         })
     }
 
-    /// Where the ray from `origin` (on z = 0) along `dir` (dir[2] > 0) crosses this plane.
+    /// Where the ray from `origin` (on z = 0) along `dir` (`dir[2] > 0`) crosses this plane.
     pub fn crossing(&self, origin: V3, dir: V3) -> [f64; 2] {
         let s = (self.height - origin[2]) / dir[2];
         [origin[0] + s * dir[0], origin[1] + s * dir[1]]
     }
 
-    /// Whether the ray from `origin` along `dir` (dir[2] > 0) passes through the polygon.
+    /// Whether the ray from `origin` along `dir` (`dir[2] > 0`) passes through the polygon.
     pub fn hit_by(&self, origin: V3, dir: V3) -> bool {
         dir[2] > 0.0 && self.contains(self.crossing(origin, dir))
     }

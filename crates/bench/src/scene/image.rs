@@ -150,7 +150,12 @@ impl ImageScene {
             // lattice rows j·per .. (j + 3)·per (in cells: 2 pixels' worth from y_start + j·w).
             let y_origin = self.corner[1] + j as f64 * w - c;
             let y_rows: Vec<(usize, f64)> = (j * per..((j + 2) * per).min(ys.len()))
-                .map(|r| (r, ys[r].1 * uniform_sum_density(ys[r].0 - y_origin, &[w, 2.0 * c])))
+                .map(|r| {
+                    (
+                        r,
+                        ys[r].1 * uniform_sum_density(ys[r].0 - y_origin, &[w, 2.0 * c]),
+                    )
+                })
                 .collect();
             for i in 0..self.side {
                 let x_origin = self.corner[0] + i as f64 * w - c - v;

@@ -255,10 +255,22 @@ mod tests {
     fn bad_layouts_are_named() {
         let e = |t| Layout::parse(t, SLOTS).unwrap_err();
         assert!(matches!(e("roulette=0"), LayoutError::SlotCount(s) if s == "bounce"));
-        assert!(matches!(e("roulette=0;bounce=1"), LayoutError::WrongCount { got: 1, .. }));
-        assert!(matches!(e("roulette=0;bounce=0,1"), LayoutError::Repeated(0)));
-        assert!(matches!(e("roulette=16;bounce=0,1"), LayoutError::TooHigh(16)));
-        assert!(matches!(e("lens=0;bounce=1,2"), LayoutError::UnknownSlot { .. }));
+        assert!(matches!(
+            e("roulette=0;bounce=1"),
+            LayoutError::WrongCount { got: 1, .. }
+        ));
+        assert!(matches!(
+            e("roulette=0;bounce=0,1"),
+            LayoutError::Repeated(0)
+        ));
+        assert!(matches!(
+            e("roulette=16;bounce=0,1"),
+            LayoutError::TooHigh(16)
+        ));
+        assert!(matches!(
+            e("lens=0;bounce=1,2"),
+            LayoutError::UnknownSlot { .. }
+        ));
         assert!(matches!(e("roulette 0"), LayoutError::Syntax(_)));
         assert!(matches!(e("roulette=x;bounce=1,2"), LayoutError::Syntax(_)));
         assert!(matches!(

@@ -156,36 +156,37 @@ struct Cell {
     evaluate: f64,
 }
 
-/// The words of `dims` (indices into the sequence), as values, `n` points, for one seed.
-fn columns(
+/// The values of sequence dimensions `dims` for points 0..n under one seed, row-major
+/// (`out[i * dims.len() + c]` is point i's value in dimension `dims[c]`).
+fn sample_rows(
     method: &SceneMethod,
     seq: Option<&gartowen::seq::DigitalSequence>,
     dims: &[usize],
     n: usize,
     seed: u64,
-) -> Result<Vec<Vec<f64>>, String> {
+) -> Result<Vec<f64>, String> {
+    let m = dims.len();
+    let mut out = vec![0.0; n * m];
     let Some(seq) = seq else {
-        return Ok(dims
-            .iter()
-            .map(|&d| {
-                let mut rng = SplitMix64::new(derive_seed(seed, d as u64));
-                (0..n).map(|_| rng.next_f64()).collect()
-            })
-            .collect());
+        for (c, &d) in dims.iter().enumerate() {
+            let mut rng = SplitMix64::new(derive_seed(seed, d as u64));
+            out.iter_mut()
+                .skip(c)
+                .step_by(m)
+                .for_each(|x| *x = rng.next_f64());
+        }
+        return Ok(out);
     };
     let scrambler = (method.make)(seed)?;
     let mut words = vec![0u64; n];
-    Ok(dims
-        .iter()
-        .map(|&d| {
-            seq.fill_points(d, 0, &mut words);
-            scrambler.scramble_batch(&mut words, Width::W32, d as u32);
-            words
-                .iter()
-                .map(|&x| gartowen::core::word_to_f64(x, Width::W32))
-                .collect()
-        })
-        .collect())
+    for (c, &d) in dims.iter().enumerate() {
+        seq.fill_points(d, 0, &mut words);
+        scrambler.scramble_batch(&mut words, Width::W32, d as u32);
+        for (x, &w) in out.iter_mut().skip(c).step_by(m).zip(&words) {
+            *x = gartowen::core::word_to_f64(w, Width::W32);
+        }
+    }
+    Ok(out)
 }
 
 /// Measures `scene` under `method` over `layouts` (each validated against the scene's slots).
@@ -244,7 +245,7 @@ pub fn measure_scene(
             let (r, pixel) = (c / pixels, c % pixels);
             let seed = derive_seed(derive_seed(config.seed, r as u64), pixel as u64);
             let t0 = Instant::now();
-            let cols = columns(method, seq.as_ref(), &needed, n_max, seed)?;
+            let rows = sample_rows(method, seq.as_ref(), &needed, n_max, seed)?;
             let generate = t0.elapsed().as_secs_f64();
             let t1 = Instant::now();
             let reference = scene.reference(pixel);
@@ -253,9 +254,9 @@ pub fn measure_scene(
             let mut u = vec![0.0; k];
             for (li, map) in maps.iter().enumerate() {
                 let (mut sum, mut s) = (0.0, 0);
-                for i in 0..n_max {
+                for (i, row) in rows.chunks_exact(needed.len()).enumerate() {
                     for (slot, &col) in u.iter_mut().zip(map) {
-                        *slot = cols[col][i];
+                        *slot = row[col];
                     }
                     sum += scene.estimate(pixel, &u);
                     if i + 1 == sizes[s] {
@@ -308,9 +309,8 @@ pub fn measure_scene(
         })
         .collect();
     // A sample costs its k coordinates' share of the generated columns and one estimate.
-    let per_cell = |c: &Cell| {
-        c.generate * k as f64 / needed.len() as f64 + c.evaluate / layouts.len() as f64
-    };
+    let per_cell =
+        |c: &Cell| c.generate * k as f64 / needed.len() as f64 + c.evaluate / layouts.len() as f64;
     let seconds_per_sample = cells.iter().map(per_cell).sum::<f64>() / (m * n_max as f64);
     let render = if pixels > 1 {
         cells[..pixels].iter().map(|c| c.first).collect()

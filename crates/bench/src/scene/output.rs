@@ -158,7 +158,11 @@ pub fn scene_markdown(
             s.push_str("No regression.\n");
         }
         for r in regs {
-            let _ = writeln!(s, "- REGRESSION {}: {:.4e} → {:.4e}", r.what, r.before, r.after);
+            let _ = writeln!(
+                s,
+                "- REGRESSION {}: {:.4e} → {:.4e}",
+                r.what, r.before, r.after
+            );
         }
     }
     s

@@ -246,9 +246,8 @@ pub fn headline(results: &[SceneResult]) -> (Vec<HeadlineRow>, f64) {
                 for (k, which) in ["best", "median", "worst"].iter().enumerate() {
                     let (ia, ra) = ea[k];
                     let (ib, rb) = eb[k];
-                    let rel = |r: &SceneResult, i: usize, s: usize, v: f64| {
-                        r.layouts[i].rmse_se[s] / v
-                    };
+                    let rel =
+                        |r: &SceneResult, i: usize, s: usize, v: f64| r.layouts[i].rmse_se[s] / v;
                     let log_se = (rel(a, ia, sa, ra).powi(2) + rel(b, ib, sb, rb).powi(2)).sqrt();
                     rows.push(HeadlineRow {
                         scene: a.scene.clone(),

@@ -21,8 +21,8 @@ const SLOTS: &[Slot] = &[
 /// L(ω) = 1 + a·z³ + b·x² (z = cos θ), estimated with Russian roulette (continue with
 /// probability p) and one cosine-sampled bounce.
 ///
-/// Exact value: ρ·(1 + a·E[z³] + b·E[x²]) with E over the cosine law: E[z³] = 2/5 (z² is
-/// uniform) and E[x²] = E[sin²θ]·E[cos²φ] = 1/2 · 1/2.
+/// Exact value: ρ·(1 + a·E(z³) + b·E(x²)) with E over the cosine law: E(z³) = 2/5 (z² is
+/// uniform) and E(x²) = E(sin²θ)·E(cos²φ) = 1/2 · 1/2.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RouletteScene {
     /// Continuation probability p.

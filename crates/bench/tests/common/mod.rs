@@ -47,6 +47,7 @@ pub fn report(slope: f64, rmse_last: f64, ratio: f64) -> Report {
         owen_variance: vec![],
         tradeoff: vec![],
         equivalence: vec![],
+        scene: None,
         thresholds: Thresholds {
             slope: 0.15,
             rmse_factor: 1.75,

@@ -123,7 +123,10 @@ pub fn run(a: SceneArgs) -> Result<ExitCode, CliError> {
         let p = Arc::new(super::spawn_external(command, base, Width::W32, a.timeout)?);
         process = Some(p.clone());
         let make = Box::new(move |seed| {
-            Ok(Box::new(ExternalScrambler::new(p.clone(), seed, Claim::NESTED)) as Box<dyn Scrambler>)
+            Ok(
+                Box::new(ExternalScrambler::new(p.clone(), seed, Claim::NESTED))
+                    as Box<dyn Scrambler>,
+            )
         });
         methods.push(
             SceneMethod::custom(
@@ -137,6 +140,9 @@ pub fn run(a: SceneArgs) -> Result<ExitCode, CliError> {
     if methods.is_empty() || a.standard {
         methods.extend(standard_methods(&registry));
     }
+    // Every argument is checked; an unwritable --out fails now, not after the measurement.
+    std::fs::create_dir_all(&a.out)
+        .map_err(|e| CliError::Io(format!("cannot create {}: {e}", a.out.display())))?;
     let bar = indicatif::ProgressBar::new(1);
     bar.set_style(
         indicatif::ProgressStyle::with_template("scene [{bar:30}] {pos}/{len} {msg}")
