@@ -336,6 +336,7 @@ pub fn build_report(
             layouts: Vec::new(),
             quick: config.quick,
             seed: config.seed,
+            margin: config.margin,
         },
         &|_, _, _| {},
     )

@@ -238,6 +238,8 @@ fn synthetic(scene: &str, method: &str, rmse: &[f64], rel_se: f64) -> SceneResul
                 rmse_se: vec![r * rel_se],
             })
             .collect(),
+        pooled_mse: vec![],
+        pooled_mse_se: vec![],
         seconds_per_sample: 1e-8,
         render: vec![],
     }
@@ -281,6 +283,7 @@ fn the_baseline_gate_flags_growth_beyond_factor_and_noise_only() {
             layouts: vec![],
             quick: true,
             seed: 1,
+            margin: 0.1,
         },
         &|_, _, _| {},
     )

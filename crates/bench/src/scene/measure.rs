@@ -141,6 +141,14 @@ pub struct SceneResult {
     pub layouts: Vec<LayoutCurve>,
     /// Seconds per sample (the layout's coordinates and one estimate), measured in this run.
     pub seconds_per_sample: f64,
+    /// The squared error averaged over layouts, then over replicates and pixels, per N: one
+    /// number per N for the whole layout set.
+    #[serde(default)]
+    pub pooled_mse: Vec<f64>,
+    /// Standard error of each [`SceneResult::pooled_mse`] (over replicates and pixels; the
+    /// layouts' shared points are inside each replicate's average, so this is exact).
+    #[serde(default)]
+    pub pooled_mse_se: Vec<f64>,
     /// The first replicate's per-pixel estimates at the smallest N with the first layout
     /// (multi-pixel scenes only; empty otherwise).
     #[serde(default)]
@@ -151,6 +159,8 @@ pub struct SceneResult {
 /// smallest size, and seconds generating and evaluating.
 struct Cell {
     sq: Vec<Vec<f64>>,
+    /// Mean over layouts of `sq`, per size.
+    pooled: Vec<f64>,
     first: f64,
     generate: f64,
     evaluate: f64,
@@ -159,15 +169,14 @@ struct Cell {
 /// The values of sequence dimensions `dims` for points 0..n under one seed, row-major
 /// (`out[i * dims.len() + c]` is point i's value in dimension `dims[c]`).
 fn sample_rows(
-    method: &SceneMethod,
-    seq: Option<&gartowen::seq::DigitalSequence>,
+    source: Option<(&gartowen::seq::DigitalSequence, &dyn Scrambler)>,
     dims: &[usize],
     n: usize,
     seed: u64,
-) -> Result<Vec<f64>, String> {
+) -> Vec<f64> {
     let m = dims.len();
     let mut out = vec![0.0; n * m];
-    let Some(seq) = seq else {
+    let Some((seq, scrambler)) = source else {
         for (c, &d) in dims.iter().enumerate() {
             let mut rng = SplitMix64::new(derive_seed(seed, d as u64));
             out.iter_mut()
@@ -175,9 +184,8 @@ fn sample_rows(
                 .step_by(m)
                 .for_each(|x| *x = rng.next_f64());
         }
-        return Ok(out);
+        return out;
     };
-    let scrambler = (method.make)(seed)?;
     let mut words = vec![0u64; n];
     for (c, &d) in dims.iter().enumerate() {
         seq.fill_points(d, 0, &mut words);
@@ -186,7 +194,7 @@ fn sample_rows(
             *x = gartowen::core::word_to_f64(w, Width::W32);
         }
     }
-    Ok(out)
+    out
 }
 
 /// Measures `scene` under `method` over `layouts` (each validated against the scene's slots).
@@ -244,8 +252,14 @@ pub fn measure_scene(
         .map(|c| {
             let (r, pixel) = (c / pixels, c % pixels);
             let seed = derive_seed(derive_seed(config.seed, r as u64), pixel as u64);
+            // Building the scrambler is per seed, not per sample: it is not timed.
+            let scrambler = match &seq {
+                Some(_) => Some((method.make)(seed)?),
+                None => None,
+            };
+            let source = seq.as_ref().zip(scrambler.as_deref());
             let t0 = Instant::now();
-            let rows = sample_rows(method, seq.as_ref(), &needed, n_max, seed)?;
+            let rows = sample_rows(source, &needed, n_max, seed);
             let generate = t0.elapsed().as_secs_f64();
             let t1 = Instant::now();
             let reference = scene.reference(pixel);
@@ -269,8 +283,12 @@ pub fn measure_scene(
                     }
                 }
             }
+            let pooled = (0..sizes.len())
+                .map(|s| sq.iter().map(|l| l[s]).sum::<f64>() / layouts.len() as f64)
+                .collect();
             Ok(Cell {
                 sq,
+                pooled,
                 first,
                 generate,
                 evaluate: t1.elapsed().as_secs_f64(),
@@ -279,24 +297,26 @@ pub fn measure_scene(
         .collect();
     let cells: Vec<Cell> = cells.into_iter().collect::<Result<_, _>>()?;
     let m = cells.len() as f64;
+    let mean_and_se = |get: &dyn Fn(&Cell) -> f64| {
+        let mean = cells.iter().map(get).sum::<f64>() / m;
+        let var = if m > 1.0 {
+            cells.iter().map(|c| (get(c) - mean).powi(2)).sum::<f64>() / (m - 1.0)
+        } else {
+            f64::NAN
+        };
+        (mean, (var / m).sqrt())
+    };
+    let (pooled_mse, pooled_mse_se) = (0..sizes.len())
+        .map(|s| mean_and_se(&|c: &Cell| c.pooled[s]))
+        .unzip();
     let curves = layouts
         .iter()
         .enumerate()
         .map(|(li, l)| {
             let (rmse, rmse_se) = (0..sizes.len())
                 .map(|s| {
-                    let mean = cells.iter().map(|c| c.sq[li][s]).sum::<f64>() / m;
-                    let var = if m > 1.0 {
-                        cells
-                            .iter()
-                            .map(|c| (c.sq[li][s] - mean).powi(2))
-                            .sum::<f64>()
-                            / (m - 1.0)
-                    } else {
-                        f64::NAN
-                    };
-                    let rmse = mean.sqrt();
-                    (rmse, (var / m).sqrt() / (2.0 * rmse))
+                    let (mse, se) = mean_and_se(&|c: &Cell| c.sq[li][s]);
+                    (mse.sqrt(), se / (2.0 * mse.sqrt()))
                 })
                 .unzip();
             LayoutCurve {
@@ -324,6 +344,8 @@ pub fn measure_scene(
         seeds: config.seeds,
         pixels,
         layouts: curves,
+        pooled_mse,
+        pooled_mse_se,
         seconds_per_sample,
         render,
     })

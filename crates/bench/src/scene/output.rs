@@ -112,6 +112,34 @@ pub fn scene_markdown(
             );
         }
     }
+    if !report.equivalence.is_empty() {
+        let _ = writeln!(s, "\n{h} ART against full-tree Owen in the scenes\n");
+        let _ = writeln!(
+            s,
+            "MSE(ART) / MSE(Owen of the same base), the MSE averaged over the layouts: \
+             \"equivalent within ±δ\" when the 90% interval lies inside [1 − δ, 1 + δ] (TOST, \
+             α = 0.05), \"different\" when the two-sided interval at α/m (Bonferroni over the \
+             sizes) excludes 1. \"detectable\" is the change the difference test finds with 80% \
+             power.\n\n| scene | N | ART | Owen | ratio | 90% interval | detectable | verdict |\n\
+             |---|---|---|---|---|---|---|---|"
+        );
+        for e in &report.equivalence {
+            let j = &e.judgement;
+            let _ = writeln!(
+                s,
+                "| {} | {} | {} | {} | {:.3} | [{:.3}, {:.3}] | ±{:.1}% | {} |",
+                e.scene,
+                e.n,
+                e.implementation,
+                e.reference,
+                j.ratio,
+                j.tost_interval[0],
+                j.tost_interval[1],
+                100.0 * j.detectable,
+                j.words()
+            );
+        }
+    }
     for info in &report.scenes {
         let _ = writeln!(s, "\n{h} {}\n\n{}\n", info.name, info.summary);
         let _ = writeln!(

@@ -81,6 +81,9 @@ pub struct SceneReport {
     pub headline: Vec<HeadlineRow>,
     /// Critical |z| of the headline (two-sided [`HEADLINE_ALPHA`], Bonferroni over its rows).
     pub headline_z: f64,
+    /// ART against the exact Owen scramble of its base, per scene and N, on the MSE.
+    #[serde(default)]
+    pub equivalence: Vec<SceneEquivalence>,
     /// Worker threads.
     pub threads: usize,
     /// Wall seconds.
@@ -99,38 +102,31 @@ pub struct ScenePlan<'a> {
     pub quick: bool,
     /// Master seed.
     pub seed: u64,
+    /// Equivalence margin δ on the MSE ratio of ART against Owen.
+    pub margin: f64,
 }
 
-/// Sizes and seeds: powers and non-powers of 2 and 16 up to 4096; 64 seeds in full, 16 quick;
-/// the image to N = 256 (full) or 64 (quick) with 4 or 1 seeds per pixel (×1024 pixels).
+/// Sizes and seeds: powers and non-powers of 2 and 16 up to 4096, 256 seeds in full and 32
+/// quick; the image to N = 1000 (full) or 64 (quick) with 8 or 2 seeds per pixel (×1024
+/// pixels).
 pub fn configs(quick: bool, seed: u64) -> (SceneConfig, SceneConfig) {
+    let config = |sizes: &[usize], seeds| SceneConfig {
+        sizes: sizes.to_vec(),
+        seeds,
+        seed,
+    };
     if quick {
         (
-            SceneConfig {
-                sizes: vec![16, 64, 100, 256, 1000, 4096],
-                seeds: 16,
-                seed,
-            },
-            SceneConfig {
-                sizes: vec![16, 64],
-                seeds: 1,
-                seed,
-            },
+            config(&[16, 64, 100, 256, 1000, 4096], 32),
+            config(&[16, 64], 2),
         )
     } else {
         (
-            SceneConfig {
-                sizes: vec![
-                    16, 32, 64, 100, 128, 256, 300, 512, 1000, 1024, 2048, 3000, 4096,
-                ],
-                seeds: 64,
-                seed,
-            },
-            SceneConfig {
-                sizes: vec![16, 64, 100, 256],
-                seeds: 4,
-                seed,
-            },
+            config(
+                &[16, 32, 64, 100, 128, 256, 300, 512, 1000, 1024, 2048, 3000, 4096],
+                256,
+            ),
+            config(&[16, 64, 100, 256, 1000], 8),
         )
     }
 }
@@ -197,6 +193,7 @@ pub fn run_scenes(
         })
         .collect();
     let (headline, headline_z) = headline(&results);
+    let equivalence = equivalence_rows(&results, plan.margin);
     Ok(SceneReport {
         schema: SCENE_SCHEMA.into(),
         schema_version: SCENE_VERSION,
@@ -208,6 +205,7 @@ pub fn run_scenes(
         results,
         headline,
         headline_z,
+        equivalence,
         threads: rayon::current_num_threads(),
         seconds: start.elapsed().as_secs_f64(),
     })
@@ -275,6 +273,76 @@ pub fn headline(results: &[SceneResult]) -> (Vec<HeadlineRow>, f64) {
         };
     }
     (rows, z)
+}
+
+/// The (ART, exact Owen of the same base) pairs judged for equivalence in the scenes.
+pub const EQUIVALENCE_PAIRS: [(&str, &str); 1] =
+    [("sz16+art-owen-16p", "sz16+owen-oracle:base=16")];
+
+/// ART against Owen in one scene at one N.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SceneEquivalence {
+    /// Scene.
+    pub scene: String,
+    /// N.
+    pub n: usize,
+    /// The ART method.
+    pub implementation: String,
+    /// The exact Owen method.
+    pub reference: String,
+    /// The judgement of MSE(implementation) / MSE(reference), the MSE averaged over the
+    /// layouts ([`SceneResult::pooled_mse`]).
+    pub judgement: gartowen::battery::equivalence::Equivalence,
+}
+
+/// Equivalence of each [`EQUIVALENCE_PAIRS`] pair per scene at the [`HEADLINE_SIZES`]: TOST
+/// with margin `margin` at α = 0.05, the difference test Bonferroni over the sizes judged.
+pub fn equivalence_rows(results: &[SceneResult], margin: f64) -> Vec<SceneEquivalence> {
+    use gartowen::battery::equivalence::{judge, ratio_of_means, EquivalenceSettings};
+    let mut rows = Vec::new();
+    for (imp, reference) in EQUIVALENCE_PAIRS {
+        for a in results.iter().filter(|r| r.method == imp) {
+            let Some(b) = results
+                .iter()
+                .find(|r| r.method == reference && r.scene == a.scene)
+            else {
+                continue;
+            };
+            let sizes: Vec<(usize, usize, usize)> = HEADLINE_SIZES
+                .iter()
+                .filter_map(|n| {
+                    let sa = a.n.iter().position(|x| x == n)?;
+                    let sb = b.n.iter().position(|x| x == n)?;
+                    Some((*n, sa, sb))
+                })
+                .collect();
+            let Some(settings) = EquivalenceSettings::new(
+                margin,
+                gartowen::battery::equivalence::DEFAULT_ALPHA,
+                sizes.len().max(1),
+            ) else {
+                continue;
+            };
+            for (n, sa, sb) in sizes {
+                let at = |v: &[f64], s: usize| v.get(s).copied().unwrap_or(f64::NAN);
+                let (ratio, log_se) = ratio_of_means(
+                    at(&a.pooled_mse, sa),
+                    at(&a.pooled_mse_se, sa),
+                    at(&b.pooled_mse, sb),
+                    at(&b.pooled_mse_se, sb),
+                )
+                .unwrap_or((f64::NAN, f64::NAN));
+                rows.push(SceneEquivalence {
+                    scene: a.scene.clone(),
+                    n,
+                    implementation: imp.into(),
+                    reference: reference.into(),
+                    judgement: judge(ratio, log_se, a.seeds * a.pixels as u64, settings),
+                });
+            }
+        }
+    }
+    rows
 }
 
 /// Two-sided critical z at [`HEADLINE_ALPHA`] split over `m` tests.

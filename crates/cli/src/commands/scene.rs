@@ -77,6 +77,11 @@ pub struct SceneArgs {
     /// Master seed.
     #[arg(long, default_value_t = 2026)]
     pub seed: u64,
+    /// Equivalence margin δ: ART is "equivalent" to Owen of its base in a scene when the 90%
+    /// interval of the MSE ratio lies inside [1 − δ, 1 + δ] (0 < δ < 1).
+    #[arg(long, default_value_t = gartowen::battery::equivalence::DEFAULT_MARGIN,
+          value_parser = super::parse_margin)]
+    pub margin: f64,
 }
 
 /// Runs `scene`.
@@ -154,6 +159,7 @@ pub fn run(a: SceneArgs) -> Result<ExitCode, CliError> {
         layouts,
         quick: a.quick,
         seed: a.seed,
+        margin: a.margin,
     };
     let report = run_scenes(&plan, &|done, total, what| {
         bar.set_length(total as u64);
