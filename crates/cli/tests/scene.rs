@@ -151,3 +151,45 @@ fn bad_arguments_exit_2_before_any_work_and_write_nothing() {
         );
     }
 }
+
+#[test]
+fn an_external_twin_measures_exactly_like_the_built_in() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../examples/external/owen_per_bit.c");
+    let exe = dir.path().join("owen_per_bit");
+    let status = Command::new("cc")
+        .args(["-O2", "-o"])
+        .arg(&exe)
+        .arg(src)
+        .status()
+        .expect("cc");
+    assert!(status.success());
+    let out = dir.path().join("x");
+    let o = gartowen(&[
+        "scene",
+        "--quick",
+        "--scene",
+        "defocus",
+        "--sequence",
+        "sobol",
+        "--scramble",
+        "owen-per-bit-hash",
+        "--external",
+        exe.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("scene.json")).unwrap()).unwrap();
+    let results = json["results"].as_array().unwrap();
+    assert_eq!(results.len(), 2);
+    assert_eq!(results[0]["method"], "sobol+owen-per-bit-hash");
+    assert!(results[1]["method"]
+        .as_str()
+        .unwrap()
+        .starts_with("sobol+external:"));
+    // Same seeds, same words: every layout's RMSE is bit-identical.
+    assert_eq!(results[0]["layouts"], results[1]["layouts"]);
+}
