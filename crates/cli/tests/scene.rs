@@ -193,3 +193,38 @@ fn an_external_twin_measures_exactly_like_the_built_in() {
     // Same seeds, same words: every layout's RMSE is bit-identical.
     assert_eq!(results[0]["layouts"], results[1]["layouts"]);
 }
+
+#[test]
+fn a_baseline_that_compares_nothing_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = |p: &str| dir.path().join(p).to_str().unwrap().to_string();
+    let o = gartowen(&[
+        "scene",
+        "--quick",
+        "--scene",
+        "roulette",
+        "--out",
+        &path("a"),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    // Another scene, or only other methods: nothing in common.
+    for args in [
+        &["--scene", "defocus"][..],
+        &[
+            "--scene",
+            "roulette",
+            "--scramble",
+            "owen-per-bit-hash",
+            "--sequence",
+            "sobol",
+        ][..],
+    ] {
+        let (out, base) = (path("b"), path("a/scene.json"));
+        let mut all = vec!["scene", "--quick", "--out", &out, "--baseline", &base];
+        all.extend_from_slice(args);
+        let o = gartowen(&all);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains("nothing"), "{}", stderr(&o));
+        assert!(!dir.path().join("b").exists());
+    }
+}

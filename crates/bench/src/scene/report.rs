@@ -402,6 +402,29 @@ pub fn compare_scenes(baseline: &SceneReport, now: &SceneReport) -> Vec<SceneReg
     out
 }
 
+/// The (scene, method) pairs of `baseline` that `plan` measures again at some common N: a
+/// baseline that shares none would compare nothing and must be refused, not pass.
+pub fn comparable_with(baseline: &SceneReport, plan: &ScenePlan) -> Vec<(String, String)> {
+    let (config, image) = configs(plan.quick, plan.seed);
+    baseline
+        .results
+        .iter()
+        .filter(|r| {
+            let Some(scene) = plan.scenes.iter().find(|s| s.name() == r.scene) else {
+                return false;
+            };
+            let sizes = if scene.pixels() > 1 {
+                &image.sizes
+            } else {
+                &config.sizes
+            };
+            plan.methods.iter().any(|m| m.label == r.method)
+                && r.n.iter().any(|n| sizes.contains(n))
+        })
+        .map(|r| (r.scene.clone(), r.method.clone()))
+        .collect()
+}
+
 /// Reads and checks a baseline scene.json.
 pub fn read_scene_baseline(path: &std::path::Path) -> Result<SceneReport, String> {
     let text = std::fs::read_to_string(path)

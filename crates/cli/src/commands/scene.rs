@@ -7,7 +7,7 @@ use gartowen::external::ExternalScrambler;
 use gartowen::seq::SequenceKind;
 use gartowen_bench::scene::measure::{standard_methods, SceneMethod};
 use gartowen_bench::scene::output::write_scene_report;
-use gartowen_bench::scene::report::{read_scene_baseline, run_scenes, ScenePlan};
+use gartowen_bench::scene::report::{comparable_with, read_scene_baseline, run_scenes, ScenePlan};
 use gartowen_bench::scene::{all_scenes, scene_by_name, Layout};
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -145,14 +145,6 @@ pub fn run(a: SceneArgs) -> Result<ExitCode, CliError> {
     if methods.is_empty() || a.standard {
         methods.extend(standard_methods(&registry));
     }
-    // Every argument is checked; an unwritable --out fails now, not after the measurement.
-    std::fs::create_dir_all(&a.out)
-        .map_err(|e| CliError::Io(format!("cannot create {}: {e}", a.out.display())))?;
-    let bar = indicatif::ProgressBar::new(1);
-    bar.set_style(
-        indicatif::ProgressStyle::with_template("scene [{bar:30}] {pos}/{len} {msg}")
-            .expect("template"),
-    );
     let plan = ScenePlan {
         scenes,
         methods,
@@ -161,6 +153,28 @@ pub fn run(a: SceneArgs) -> Result<ExitCode, CliError> {
         seed: a.seed,
         margin: a.margin,
     };
+    if let (Some(b), Some(path)) = (&baseline, &a.baseline) {
+        if comparable_with(b, &plan).is_empty() {
+            return Err(CliError::Usage(format!(
+                "--baseline {}: no scene and method with a common N in this run, so nothing \
+                 would be compared (baseline: {})",
+                path.display(),
+                b.results
+                    .iter()
+                    .map(|r| format!("{} {}", r.scene, r.method))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            )));
+        }
+    }
+    // Every argument is checked; an unwritable --out fails now, not after the measurement.
+    std::fs::create_dir_all(&a.out)
+        .map_err(|e| CliError::Io(format!("cannot create {}: {e}", a.out.display())))?;
+    let bar = indicatif::ProgressBar::new(1);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("scene [{bar:30}] {pos}/{len} {msg}")
+            .expect("template"),
+    );
     let report = run_scenes(&plan, &|done, total, what| {
         bar.set_length(total as u64);
         bar.set_position(done as u64);
