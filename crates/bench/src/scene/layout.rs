@@ -288,6 +288,15 @@ mod tests {
         assert_eq!(r(&[0, 4, 5]), Relation::AcrossQuads);
         assert_eq!(r(&[5, 3, 4]), Relation::SamePair);
         assert_eq!(r(&[5, 6, 8]), Relation::SameQuad);
+        assert_eq!(r(&[9, 8, 0]), Relation::SamePair);
+        assert_eq!(r(&[14, 12, 1]), Relation::SameQuad);
+        assert_eq!(r(&[14, 3, 1]), Relation::AcrossQuads);
+        let words = [
+            Relation::SamePair.words(),
+            Relation::SameQuad.words(),
+            Relation::AcrossQuads.words(),
+        ];
+        assert_eq!(words, ["same pair", "same quad", "across quads"]);
     }
 
     #[test]
