@@ -1,4 +1,4 @@
-(** * T3: the ART-Owen loop (DESIGN.md 3.3) defines a nested scramble, for any child table, any
+(** * T3: the ART-Owen loop (docs/design.md §3.3) defines a nested scramble, for any child table, any
     ψ table, any translation codes and any root.
 
     The loop keeps a symbol [s] and pending translations [F j] for the digit [j] levels below
@@ -28,7 +28,7 @@ Hypothesis psi_inv_psi : forall s d, d < b -> psi_inv s (psi s d) = d.
 Hypothesis psi_psi_inv : forall s d, d < b -> psi s (psi_inv s d) = d.
 Variable code : nat -> nat -> nat.
 
-(** The loop of DESIGN.md 3.3. *)
+(** The loop of docs/design.md §3.3. *)
 Fixpoint art (s : nat) (F : nat -> nat) (x : list nat) : list nat :=
   match x with
   | [] => []

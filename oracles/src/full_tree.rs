@@ -1,4 +1,4 @@
-//! `FullTreeOwen`: the exact nested scramble in base 2^q, node by node (`DESIGN.md` §3.1).
+//! `FullTreeOwen`: the exact nested scramble in base 2^q, node by node (`docs/design.md` §3.1).
 //!
 //! Node (depth k, prefix p = the first k ORIGINAL digits) of dimension `dim` gets a permutation
 //! σ_{k,p} of its digit alphabet that is a pure function of (seed, dim, k, p), computed only

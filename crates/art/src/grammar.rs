@@ -1,4 +1,4 @@
-//! The ART grammar (`DESIGN.md` §3.2): the alphabet Σ_L of distinct length-L factors of the
+//! The ART grammar (`docs/design.md` §3.2): the alphabet Σ_L of distinct length-L factors of the
 //! Thue–Morse word t (t(n) = popcount(n) mod 2) and, for branching 2^q, the child rule
 //! child(w, d) = the length-L factor of σ^q(w) at offset (2^q − 1)(L − 1) + d.
 //!

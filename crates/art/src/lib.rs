@@ -1,4 +1,4 @@
-//! ART-Owen scrambling in bases 2^q (`DESIGN.md` §3.2–3.4): the Thue–Morse ART grammar, the
+//! ART-Owen scrambling in bases 2^q (`docs/design.md` §3.2–3.4): the Thue–Morse ART grammar, the
 //! ART-Owen family (binary, Q-ART, base 8, base 16, matrix, translation-only) and hash-based
 //! peers, all behind the shared `Scrambler` trait.
 //!

@@ -1,4 +1,4 @@
-//! Hash-based peers (`DESIGN.md` §3.4), for comparison and not as references: Laine–Karras
+//! Hash-based peers (`docs/design.md` §3.4), for comparison and not as references: Laine–Karras
 //! hashing on reversed bits, the improved LK hash, and a per-bit hashed binary Owen scramble.
 //! Each dimension's seed is `hash_words([seed, dim])`.
 //!

@@ -1,4 +1,4 @@
-//! Integrands on [0,1)^s with exact integrals (`DESIGN.md` §7): the speed-against-error test
+//! Integrands on [0,1)^s with exact integrals (`docs/design.md` §7): the speed-against-error test
 //! functions. Each [`Family`] yields one [`Integrand`] instance per replicate; most families
 //! are a single fixed function, the Heaviside family draws a new random orientation per
 //! replicate (so its RMSE averages over orientations, as in the literature).

@@ -2,7 +2,7 @@
 //! GF(2) matrices, counter-based hashing, float conversion and the [`Scrambler`] trait.
 //!
 //! Everything here is dependency-free, and the per-word paths do not allocate.
-//! Conventions follow `DESIGN.md` section 1: a coordinate is a W-bit word `x` whose value is
+//! Conventions follow `docs/design.md` §1: a coordinate is a W-bit word `x` whose value is
 //! `x · 2^-W`; digit 0 is the most significant digit.
 
 pub mod claim;

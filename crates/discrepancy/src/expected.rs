@@ -1,6 +1,6 @@
 //! The expected L2-star D² under nested uniform (Owen) scrambling of a binary digital net.
 //!
-//! Derivation (`DESIGN.md` §5). Write D*² = 3^-d − (2^(1−d)/N)·A + (1/N²)·P with
+//! Derivation (`docs/design.md` §5). Write D*² = 3^-d − (2^(1−d)/N)·A + (1/N²)·P with
 //! A = Σ_i Π_k (1 − x_ik²) and P = Σ_ij Π_k (1 − max(x_ik, x_jk)).
 //!
 //! After a nested uniform scramble each point is uniform on [0,1)^d, so E[1 − x²] = 2/3 and the

@@ -1,4 +1,4 @@
-//! Discrepancy of W-bit point sets (`DESIGN.md` §5): L2-star (Warnock), centered (CD),
+//! Discrepancy of W-bit point sets (`docs/design.md` §5): L2-star (Warnock), centered (CD),
 //! wrap-around (WD) and generalized L2 (GL2), each by four methods.
 //!
 //! Every kind has the form D² = c0 + c1·(1/N)Σ_i Π_k s(x_ik) + c2·(1/N²)Σ_i Σ_j Π_k p(x_ik, x_jk).

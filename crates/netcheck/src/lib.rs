@@ -1,4 +1,4 @@
-//! The net-property checker (`DESIGN.md` §4): the suite's judge.
+//! The net-property checker (`docs/design.md` §4): the suite's judge.
 //!
 //! Two independent paths decide the same facts:
 //! * the **counting path** ([`counting`]) works on any point set in any integer base b ≥ 2: per

@@ -2,7 +2,7 @@
 //!
 //! A base-2^q box of shape (d_j) is a binary box of shape (q·d_j), so a shape with
 //! Σd_j = m − t holds iff the stacked first q·d_j rows of every C_j, restricted to the first
-//! q·m columns, are linearly independent over GF(2) (rank q(m − t)). `DESIGN.md` §4 says
+//! q·m columns, are linearly independent over GF(2) (rank q(m − t)). `docs/design.md` §4 says
 //! "full rank q·m", which is the t = 0 case; for t > 0 only q(m − t) rows are stacked.
 //!
 //! Shapes are explored depth-first over dimensions with an incremental XOR basis: the rows of a

@@ -1,4 +1,4 @@
-//! The small fields GF(2), GF(4) and GF(16) of `DESIGN.md` §2, as used by the SZ construction.
+//! The small fields GF(2), GF(4) and GF(16) of `docs/design.md` §2, as used by the SZ construction.
 //!
 //! * GF(4) = GF(2)[ω]/(ω²+ω+1): element e in 0..4, bit 0 = coefficient of 1, bit 1 = of ω.
 //! * GF(16) = GF(4)[y]/(y²+y+ω): element α+βy encoded as `α | β << 2`, so bit i of the

@@ -1,7 +1,7 @@
 //! Digital sequences with random access: Sobol (Joe–Kuo 6.21201), SZ-style universal
 //! sequences `sz4`/`sz16`, and the Faure-over-GF(2^q) builder they are made from.
 //!
-//! Conventions (`DESIGN.md` §2): generator matrix C_j is stored as columns, each a W-bit word
+//! Conventions (`docs/design.md` §2): generator matrix C_j is stored as columns, each a W-bit word
 //! with row 0 in the most significant bit; point n has x_j(n) = XOR of the columns c of C_j
 //! over the set bits c of n (bit 0 = least significant bit of the index).
 

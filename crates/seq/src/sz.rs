@@ -1,4 +1,4 @@
-//! SZ-style universal sequences (`DESIGN.md` §2): gartowen's own binary-constructed
+//! SZ-style universal sequences (`docs/design.md` §2): gartowen's own binary-constructed
 //! (0,2^q)-sequences, not the published SZ matrices (which are not public).
 //!
 //! * `sz4`: dimensions a = 0, 1, ω, ω² of the GF(4) Faure sequence, output transforms

@@ -1,4 +1,4 @@
-//! sz4/sz16 against the check values and identities of DESIGN.md §2.
+//! sz4/sz16 against the check values and identities of docs/design.md §2.
 
 use gartowen_core::Width;
 use gartowen_seq::field::{expand_gf4_matrix, gf16_mul, gf4_mul, SmallField, OMEGA};

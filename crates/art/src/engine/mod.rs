@@ -1,4 +1,4 @@
-//! The ART-Owen loop (`DESIGN.md` §3.3), for any variant:
+//! The ART-Owen loop (`docs/design.md` §3.3), for any variant:
 //!
 //! ```text
 //! F = 0
