@@ -6,6 +6,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+# Prerequisites first: a missing tool stops the run in seconds, not after the tests.
+scripts/prerequisites.sh
+
 cargo test --workspace --no-fail-fast
 
 # The Python package: built with maturin into target/pyvenv, tested with pytest.

@@ -345,7 +345,7 @@ pub enum Panel {
 /// is drawn white).
 const SHADE_RANGE: (f64, f64) = (1e-2, 4.0);
 
-/// The grey of spectrum value `v` (see [`SHADE_RANGE`]).
+/// The grey of spectrum value `v` (black at 0.01 or less, white at 4 or more).
 pub fn spectrum_shade(v: f64) -> RGBColor {
     let (lo, hi) = SHADE_RANGE;
     let t = ((v.max(lo).ln() - lo.ln()) / (hi.ln() - lo.ln())).clamp(0.0, 1.0);

@@ -44,7 +44,7 @@ pub trait Family: Send + Sync {
     fn instance(&self, r: u64) -> Box<dyn Integrand>;
 }
 
-/// The area of {x ∈ [0,1]² : n·(x − p) ≥ 0}: clip the unit square by the half-plane
+/// The area of {x ∈ \[0,1\]² : n·(x − p) ≥ 0}: clip the unit square by the half-plane
 /// (one Sutherland–Hodgman pass) and take the shoelace area.
 pub fn half_plane_area(normal: [f64; 2], point: [f64; 2]) -> f64 {
     let side = |v: [f64; 2]| normal[0] * (v[0] - point[0]) + normal[1] * (v[1] - point[1]);

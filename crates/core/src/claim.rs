@@ -79,7 +79,7 @@ impl NodeGroup {
         }
     }
 
-    /// Whether the permutation with `images` (images[d] = π(d), all b of them) is in the group.
+    /// Whether the permutation with `images` (`images[d]` = π(d), all b of them) is in the group.
     ///
     /// ```
     /// use gartowen_core::NodeGroup;

@@ -5,7 +5,7 @@
 //! For d ≤ 4 each product is formed in double-double; for larger d products are plain f64 (d
 //! roundings each), summed in blocks by f64 pairwise sums and the blocks in double-double.
 //! Every addition and product sees non-negative operands, the case `proofs/DdSum.v` proves;
-//! [`crate::bound`] evaluates that theorem's bound for exactly this summation order, after
+//! `crate::bound` evaluates that theorem's bound for exactly this summation order, after
 //! checking its hypotheses at run time, and the final combination is exact in rationals.
 
 use crate::bound::{self, Layout};

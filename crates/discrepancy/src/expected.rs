@@ -12,7 +12,7 @@
 //! net the multiset {x_i ⊕ x_j : j} is the net itself, so the off-diagonal part is
 //! N·Σ over the net's points h ≠ 0. Altogether
 //!
-//! E[D*²] = −3^-d + 2^-d/N + (1/N)·Σ_{h ≠ 0} Π_k (1/2 − 2^(−lz(h_k)−2)),
+//! E\[D*²\] = −3^-d + 2^-d/N + (1/N)·Σ_{h ≠ 0} Π_k (1/2 − 2^(−lz(h_k)−2)),
 //!
 //! with a zero coordinate contributing 1/2.
 
@@ -29,7 +29,7 @@ fn factor(h: u64, w: u32) -> f64 {
     }
 }
 
-/// E[D*²] for the N points of a binary digital net (closed under XOR), O(N·d).
+/// E\[D*²\] for the N points of a binary digital net (closed under XOR), O(N·d).
 pub fn expected_l2star_owen(net: Points) -> f64 {
     let (n, d, w) = (net.len(), net.dims, net.width.bits());
     let mut sum = 0.0;

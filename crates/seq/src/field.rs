@@ -1,8 +1,8 @@
 //! The small fields GF(2), GF(4) and GF(16) of `docs/design.md` §2, as used by the SZ construction.
 //!
-//! * GF(4) = GF(2)[ω]/(ω²+ω+1): element e in 0..4, bit 0 = coefficient of 1, bit 1 = of ω.
-//! * GF(16) = GF(4)[y]/(y²+y+ω): element α+βy encoded as `α | β << 2`, so bit i of the
-//!   encoding is the coefficient of the GF(2)-basis element (1, ω, y, ωy)[i].
+//! * GF(4) = GF(2)\[ω\]/(ω²+ω+1): element e in 0..4, bit 0 = coefficient of 1, bit 1 = of ω.
+//! * GF(16) = GF(4)\[y\]/(y²+y+ω): element α+βy encoded as `α | β << 2`, so bit i of the
+//!   encoding is the coefficient of the GF(2)-basis element `(1, ω, y, ωy)[i]`.
 //!
 //! [`SmallField::mult_matrix`] is the binary q×q matrix of x ↦ a·x in that basis: column j is
 //! a·(basis j), row i is the coefficient of basis i. That is M4(a) and M16(a) of the design.
@@ -37,9 +37,9 @@ impl DigitField for SmallField {
 pub enum SmallField {
     /// GF(2).
     Gf2,
-    /// GF(4) = GF(2)[ω]/(ω²+ω+1).
+    /// GF(4) = GF(2)\[ω\]/(ω²+ω+1).
     Gf4,
-    /// GF(16) = GF(4)[y]/(y²+y+ω).
+    /// GF(16) = GF(4)\[y\]/(y²+y+ω).
     Gf16,
 }
 
@@ -145,7 +145,7 @@ impl SmallField {
     }
 }
 
-/// The 4×4 binary expansion of a 2×2 GF(4) matrix `g`: entry (2i+u, 2j+v) is M4(g[i][j])[u][v].
+/// The 4×4 binary expansion of a 2×2 GF(4) matrix `g`: entry (2i+u, 2j+v) is `M4(g[i][j])[u][v]`.
 /// Used for E(α) and for M16 in the design's formulation.
 pub fn expand_gf4_matrix(g: [[u32; 2]; 2]) -> Gf2Matrix {
     let mut rows = [0u8; 4];

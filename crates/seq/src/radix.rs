@@ -69,7 +69,7 @@ pub fn radical_inverse(i: u64, b: u64, n: u32) -> Fraction {
 }
 
 /// The first `count` points of the `dims`-dimensional Halton sequence (index 0 first, so
-/// point 0 is the origin), row-major, exact. Dimension j is the radical inverse in PRIMES[j].
+/// point 0 is the origin), row-major, exact. Dimension j is the radical inverse in `PRIMES[j]`.
 pub fn halton(count: u64, dims: usize) -> Result<Vec<Fraction>, SeqError> {
     if dims == 0 {
         return Err(SeqError::NoDimensions);

@@ -2,8 +2,8 @@
 //! (0,2^q)-sequences, not the published SZ matrices (which are not public).
 //!
 //! * `sz4`: dimensions a = 0, 1, ω, ω² of the GF(4) Faure sequence, output transforms
-//!   D = I, U, I, U with U = [[1,1],[0,1]] per 2-bit output digit.
-//! * `sz16`: dimension j = 4β + k uses a_j = α_k² + β·y with α_k = (0, 1, ω, ω²)[k] and
+//!   D = I, U, I, U with U = `[[1,1],[0,1]]` per 2-bit output digit.
+//! * `sz16`: dimension j = 4β + k uses a_j = α_k² + β·y with α_k = `(0, 1, ω, ω²)[k]` and
 //!   D_j = blockdiag(U,U)·E(α_k) when α_k ∈ {1, ω²}, else E(α_k), where E(α) is the binary
 //!   expansion of the GF(4) matrix [[1, α], [0, 1]].
 
@@ -12,13 +12,13 @@ use crate::field::{expand_gf4_matrix, gf4_mul, SmallField, OMEGA, OMEGA2};
 use crate::{DigitalSequence, SeqError};
 use gartowen_core::{Gf2Matrix, PowerOfTwoBase, Width};
 
-/// U = [[1,1],[0,1]] on a 2-bit digit (row 0 = x0 + x1, row 1 = x1).
+/// U = `[[1,1],[0,1]]` on a 2-bit digit (row 0 = x0 + x1, row 1 = x1).
 pub fn u_matrix() -> Gf2Matrix {
     Gf2Matrix::from_rows(2, &[0b11, 0b10]).expect("2×2")
 }
 
 /// E(α): the 4×4 binary expansion of the GF(4) matrix [[1, α], [0, 1]], entry (2i+u, 2j+v) =
-/// M4(G[i][j])[u][v].
+/// `M4(G[i][j])[u][v]`.
 pub fn e_matrix(alpha: u32) -> Gf2Matrix {
     expand_gf4_matrix([[1, alpha], [0, 1]])
 }

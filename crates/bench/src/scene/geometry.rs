@@ -107,7 +107,7 @@ pub fn shoelace(v: &[[f64; 2]]) -> f64 {
 /// Lambert's polygon formula: the projected solid angle ∫ cos θ dω of a planar polygon seen
 /// from `p` on z = 0 with normal +z, (1/2)|Σ Θ_i n·Γ_i| where Θ_i is the angle between the
 /// directions to vertices i and i+1 and Γ_i the unit normal of their plane. The polygon must lie
-/// wholly above the plane z = p[2]. An empty polygon subtends 0.
+/// wholly above the plane z = `p[2]`. An empty polygon subtends 0.
 pub fn projected_solid_angle(p: V3, poly: &[V3]) -> f64 {
     let n = poly.len();
     if n < 3 {

@@ -122,7 +122,7 @@ pub struct VerifyArgs {
     #[arg(long)]
     pub junit: Option<PathBuf>,
     /// Judge on this claim instead of each implementation's own: nested | owen |
-    /// marginal[:GROUP] | independent:GROUP (GROUP: symmetric, affine, translation, cyclic).
+    /// `marginal[:GROUP]` | `independent:GROUP` (GROUP: symmetric, affine, translation, cyclic).
     /// External programs default to owen.
     #[arg(long)]
     pub claim: Option<String>,

@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# Checks, within seconds and before anything is built, what the test command and the main job
+# need: cargo, a C compiler (the external examples), python3 ≥ 3.9 with venv, and for the
+# proofs coqc with Flocq and ocamlopt. As root on Debian/Ubuntu it installs what is missing
+# with apt-get; otherwise (or with GARTOWEN_NO_INSTALL=1) it stops with the exact install line.
+# GARTOWEN_SKIP_PROOFS=1 leaves out the Coq and OCaml tools (the proofs then say loudly that
+# they were not checked); GARTOWEN_SKIP_PYTHON=1 leaves out Python (the main job needs none).
+set -uo pipefail
+cd "$(dirname "$0")/.."
+
+missing=()
+have() { command -v "$1" >/dev/null 2>&1; }
+
+have cargo || {
+  echo "prerequisites: cargo is missing: install the Rust toolchain (https://rustup.rs)" >&2
+  exit 1
+}
+have cc || missing+=(gcc)
+if [ "${GARTOWEN_SKIP_PYTHON:-0}" = 1 ]; then
+  :
+elif have python3 && python3 -c 'import sys; sys.exit(sys.version_info < (3, 9))' 2>/dev/null; then
+  python3 -c 'import venv, ensurepip' 2>/dev/null || missing+=(python3-venv)
+else
+  missing+=(python3 python3-venv)
+fi
+if [ "${GARTOWEN_SKIP_PROOFS:-0}" != 1 ] && ls proofs/*.v >/dev/null 2>&1; then
+  if have coqc; then
+    probe=$(mktemp -d)
+    printf 'From Flocq Require Import Core.\n' >"$probe/probe.v"
+    (cd "$probe" && coqc probe.v >/dev/null 2>&1) || missing+=(libcoq-flocq)
+    rm -rf "$probe"
+  else
+    missing+=(coq libcoq-flocq)
+  fi
+  have ocamlopt || missing+=(ocaml-nox)
+fi
+# GNU parallel drives examples/ci/shard-local.sh, which falls back to xargs -P without it:
+# installed when we can, never required.
+optional=()
+have parallel || optional+=(parallel)
+
+[ ${#missing[@]} -eq 0 ] && [ ${#optional[@]} -eq 0 ] && exit 0
+line="apt-get install -y ${missing[*]} ${optional[*]}"
+if [ "${GARTOWEN_NO_INSTALL:-0}" != 1 ] && [ "$(id -u)" = 0 ] && have apt-get; then
+  echo "prerequisites: installing ${missing[*]} ${optional[*]}"
+  apt-get update -qq && DEBIAN_FRONTEND=noninteractive $line -qq && exit 0
+  echo "prerequisites: apt-get failed" >&2
+fi
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+echo "prerequisites: missing ${missing[*]}. Install them first (Debian/Ubuntu):" >&2
+echo "    sudo $line" >&2
+echo "or set GARTOWEN_SKIP_PROOFS=1 to run without the Coq proofs (they are then not checked)." >&2
+exit 1
