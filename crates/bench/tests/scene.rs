@@ -314,3 +314,94 @@ fn the_baseline_gate_flags_growth_beyond_factor_and_noise_only() {
     }
     assert!(compare_scenes(&base, &noisy).is_empty());
 }
+
+/// Two pixels of one coordinate: pixel p estimates p + 1/2 by p + u.
+struct TwoPixels;
+
+const ONE: &[Slot] = &[Slot { name: "u", dims: 1 }];
+
+impl Scene for TwoPixels {
+    fn name(&self) -> &'static str {
+        "two-pixels"
+    }
+    fn summary(&self) -> &'static str {
+        "test"
+    }
+    fn slots(&self) -> &'static [Slot] {
+        ONE
+    }
+    fn pixels(&self) -> usize {
+        2
+    }
+    fn estimate(&self, pixel: usize, u: &[f64]) -> f64 {
+        pixel as f64 + u[0]
+    }
+    fn reference(&self, pixel: usize) -> f64 {
+        pixel as f64 + 0.5
+    }
+    fn reference_error(&self) -> f64 {
+        0.0
+    }
+}
+
+#[test]
+fn the_harness_follows_its_documented_seeds_pixels_and_prefixes() {
+    // Recomputed by hand: replicate r, pixel k has seed derive_seed(derive_seed(seed, r), k);
+    // random dimension d draws from SplitMix64(derive_seed(that, d)).
+    let (seeds, sizes, dim) = (3u64, [5usize, 12], 7usize);
+    let c = SceneConfig {
+        sizes: sizes.to_vec(),
+        seeds,
+        seed: 99,
+    };
+    let got = measure_scene(
+        &TwoPixels,
+        &SceneMethod::random(),
+        &[Layout { dims: vec![dim] }],
+        &c,
+    )
+    .unwrap();
+    assert_eq!(got.pixels, 2);
+    let mut sq = vec![Vec::new(); sizes.len()];
+    let mut render = Vec::new();
+    for r in 0..seeds {
+        for k in 0..2usize {
+            let s = derive_seed(derive_seed(99, r), k as u64);
+            let mut rng = SplitMix64::new(derive_seed(s, dim as u64));
+            let v: Vec<f64> = (0..12).map(|_| k as f64 + rng.next_f64()).collect();
+            for (i, &n) in sizes.iter().enumerate() {
+                let mean = v[..n].iter().sum::<f64>() / n as f64;
+                sq[i].push((mean - (k as f64 + 0.5)).powi(2));
+                if r == 0 && i == 0 {
+                    render.push(mean);
+                }
+            }
+        }
+    }
+    for (i, errs) in sq.iter().enumerate() {
+        let mse = errs.iter().sum::<f64>() / errs.len() as f64;
+        assert_eq!(got.layouts[0].rmse[i], mse.sqrt(), "N = {}", sizes[i]);
+        assert!((got.pooled_mse[i] - mse).abs() <= 1e-15 * mse);
+    }
+    assert_eq!(got.render, render);
+}
+
+#[test]
+fn the_standard_methods_are_the_six_of_the_issue() {
+    let registry = gartowen::registry();
+    let labels: Vec<String> = gartowen_bench::scene::measure::standard_methods(&registry)
+        .iter()
+        .map(|m| m.label.clone())
+        .collect();
+    assert_eq!(
+        labels,
+        [
+            "sobol+owen-oracle",
+            "sobol+lk-hash",
+            "sz16+art-owen-2",
+            "sz16+art-owen-16p",
+            "sz16+owen-oracle:base=16",
+            "random"
+        ]
+    );
+}

@@ -202,11 +202,16 @@ impl Layout {
 pub fn candidate_layouts(slots: &[Slot], scattered: usize, seed: u64) -> Vec<Layout> {
     let k: usize = slots.iter().map(|s| s.dims).sum();
     let head = slots.first().map_or(0, |s| s.dims);
-    let mut out: Vec<Layout> = (head..=SEQUENCE_DIMS.saturating_sub(k - head))
-        .map(|j| Layout {
+    let mut out: Vec<Layout> = Vec::new();
+    for j in head..=SEQUENCE_DIMS.saturating_sub(k - head) {
+        let layout = Layout {
             dims: (0..head).chain(j..j + (k - head)).collect(),
-        })
-        .collect();
+        };
+        // A scene of one slot has one such layout, whatever j.
+        if !out.contains(&layout) {
+            out.push(layout);
+        }
+    }
     let mut rng = SplitMix64::new(seed);
     let mut tries = 0;
     let wanted = out.len() + scattered;
@@ -317,5 +322,15 @@ mod tests {
         assert!(rel.contains(&Relation::SameQuad));
         assert!(rel.contains(&Relation::AcrossQuads));
         assert_eq!(candidate_layouts(SLOTS, 3, 1), c);
+    }
+
+    #[test]
+    fn a_one_coordinate_scene_gets_each_dimension_once_and_the_search_ends() {
+        const ONE: &[Slot] = &[Slot { name: "u", dims: 1 }];
+        // Only 16 layouts exist; asking for more ends when the tries run out.
+        let c = candidate_layouts(ONE, 40, 5);
+        let mut dims: Vec<usize> = c.iter().map(|l| l.dims[0]).collect();
+        dims.sort_unstable();
+        assert_eq!(dims, (0..16).collect::<Vec<_>>());
     }
 }
