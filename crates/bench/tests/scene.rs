@@ -382,6 +382,13 @@ fn the_harness_follows_its_documented_seeds_pixels_and_prefixes() {
         let mse = errs.iter().sum::<f64>() / errs.len() as f64;
         assert_eq!(got.layouts[0].rmse[i], mse.sqrt(), "N = {}", sizes[i]);
         assert!((got.pooled_mse[i] - mse).abs() <= 1e-15 * mse);
+        // Standard errors: the sample variance (m − 1) of the squared errors over m cells.
+        let m = errs.len() as f64;
+        let var = errs.iter().map(|e| (e - mse).powi(2)).sum::<f64>() / (m - 1.0);
+        let se = (var / m).sqrt();
+        assert!((got.pooled_mse_se[i] - se).abs() <= 1e-12 * se);
+        let rmse_se = se / (2.0 * mse.sqrt());
+        assert!((got.layouts[0].rmse_se[i] - rmse_se).abs() <= 1e-12 * rmse_se);
     }
     assert_eq!(got.render, render);
 }
