@@ -1,4 +1,4 @@
-"""The README's Python examples and examples/python/verify_my_scrambler.py run as documented."""
+"""The Python examples of docs/python.md and examples/python/verify_my_scrambler.py run as documented."""
 
 import pathlib
 import re
@@ -9,9 +9,8 @@ REPO = pathlib.Path(__file__).resolve().parents[2]
 
 
 def readme_python_blocks():
-    text = (REPO / "README.md").read_text()
-    section = text.split("\n## Python\n", 1)[1].split("\n## ", 1)[0]
-    return re.findall(r"```python\n(.*?)```", section, re.S)
+    text = (REPO / "docs" / "python.md").read_text()
+    return re.findall(r"```python\n(.*?)```", text, re.S)
 
 
 def test_readme_examples_run_and_say_what_they_print(capsys):
@@ -19,7 +18,7 @@ def test_readme_examples_run_and_say_what_they_print(capsys):
     assert len(blocks) >= 5  # one per function at least
     namespace = {}
     for block in blocks:
-        exec(compile(block, "README.md", "exec"), namespace)
+        exec(compile(block, "docs/python.md", "exec"), namespace)
     # The claims the comments make.
     assert namespace["r"].passed is False
     assert {"pair-law", "flip-rank"} <= {c["check"] for c in namespace["r"].failures}

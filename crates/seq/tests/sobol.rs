@@ -169,7 +169,7 @@ fn incremental_fills_equal_random_access_in_both_orders() {
 }
 
 /// The Faure sequence in base 2 is Sobol's first two dimensions, column for column (the
-/// README says so): the identity and the Pascal matrix mod 2.
+/// docs/conventions.md says so): the identity and the Pascal matrix mod 2.
 #[test]
 fn faure_in_base_2_is_the_first_two_sobol_dimensions() {
     let sobol = gartowen_seq::sobol::sequence(2, Width::W32).unwrap();

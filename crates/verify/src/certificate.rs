@@ -1,7 +1,7 @@
 //! The certificate envelope shared by `gartowen verify`, `check` and `discrepancy`: one
 //! versioned JSON schema, so a CI gate can archive and compare any of them.
 //!
-//! Schema `gartowen-certificate`, version 1 (documented in the README, "Certificates"):
+//! Schema `gartowen-certificate`, version 1 (documented in docs/certificates.md):
 //!
 //! | field            | meaning                                                              |
 //! |------------------|----------------------------------------------------------------------|

@@ -63,7 +63,7 @@ pub enum LevelArg {
 ///   gartowen verify --level exhaustive --dims 0..1023 --impl art-owen-2 --shard 7/32 --json s7.json
 ///   gartowen verify --level exhaustive --dims 0..3 --external ./lk_hash --base 2 --claim nested
 ///
-/// External implementations (the protocol is in the README, "External implementations"):
+/// External implementations (the protocol is in docs/external.md):
 ///   gartowen verify --external './my_scrambler --fast' --base 16 --width 32
 ///   gartowen verify --external ./owen_per_bit --base 2 --width 64 --expect owen-per-bit-hash
 ///
