@@ -1,5 +1,6 @@
 //! FullTreeOwen in time per 32-bit coordinate for b = 2, 4, 16, 256, single queries and the
 //! batch path (lane-interleaved), with the identity as the in-run reference.
+#![allow(missing_docs)] // criterion_group! defines an undocumented public function
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use gartowen_core::{Identity, PowerOfTwoBase, Scrambler, SplitMix64, Width};

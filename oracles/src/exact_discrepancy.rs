@@ -8,9 +8,13 @@ use num_traits::{One, Signed, Zero};
 /// The four kinds, named as in `gartowen-discrepancy`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ReferenceKind {
+    /// L2-star (Warnock).
     L2Star,
+    /// Centered (Hickernell's CD).
     Centered,
+    /// Wrap-around (WD).
     WrapAround,
+    /// Generalized L2 (GL2).
     GeneralizedL2,
 }
 

@@ -46,7 +46,12 @@ pub enum InspectMode {
     /// Every word evaluated.
     Exhaustive,
     /// `nodes` random nodes from `seed`.
-    Probes { nodes: u64, seed: u64 },
+    Probes {
+        /// Nodes probed.
+        nodes: u64,
+        /// Seed choosing them.
+        seed: u64,
+    },
 }
 
 /// The empirical law of reconstructed node permutations against the uniform law on S_b.

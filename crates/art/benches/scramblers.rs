@@ -1,5 +1,6 @@
 //! Every registered scrambler side by side in time per 32-bit coordinate, with the identity
 //! and the LK hash as in-run references (ratios are what the closing note reports).
+#![allow(missing_docs)] // criterion_group! defines an undocumented public function
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use gartowen_art::peers::{LkFlavor, LkHash, PerBitOwen};

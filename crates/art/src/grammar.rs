@@ -70,11 +70,19 @@ pub enum GrammarError {
     /// L = 0 or q outside 1..=8.
     BadParameters(String),
     /// A child factor is not in the alphabet (would contradict closure).
-    NotClosed { symbol: u32, digit: u32 },
+    NotClosed {
+        /// The parent symbol.
+        symbol: u32,
+        /// The child digit whose factor is missing.
+        digit: u32,
+    },
     /// No L gives exactly this many symbols.
     NoSuchAlphabetSize {
+        /// Symbols asked for.
         requested: usize,
+        /// The nearest size below that exists.
         below: usize,
+        /// The nearest size above that exists.
         above: usize,
     },
 }

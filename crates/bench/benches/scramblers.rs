@@ -2,6 +2,7 @@
 //! hash-based Owen-scrambled Sobol, 4 dimensions per set) as the peer. Throughput is in
 //! coordinates, so criterion reports coordinates per second; ns per coordinate is its inverse.
 //! Table bytes are printed once before the runs.
+#![allow(missing_docs)] // criterion_group! defines an undocumented public function
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use gartowen::core::{BuildContext, PowerOfTwoBase, SplitMix64, Width};

@@ -16,21 +16,45 @@ pub enum CoreError {
     /// A float input outside [0, 1).
     OutOfUnitInterval(f64),
     /// A float in [0,1) that is not a multiple of 2^-width, so no word holds it exactly.
-    NotRepresentable { value: f64, width: u32 },
+    NotRepresentable {
+        /// The float given.
+        value: f64,
+        /// The word width W in bits.
+        width: u32,
+    },
     /// A word with bits set above the width.
-    WordTooWide { word: u64, width: u32 },
+    WordTooWide {
+        /// The word given.
+        word: u64,
+        /// The word width W in bits.
+        width: u32,
+    },
     /// A slice that is not a permutation of 0..n.
-    NotAPermutation { reason: String },
+    NotAPermutation {
+        /// What is wrong with it.
+        reason: String,
+    },
     /// A permutation size that is not supported (must be 1..=256).
     InvalidPermutationSize(usize),
     /// A GF(2) matrix of size outside 1..=8 or an entry outside it.
-    InvalidMatrix { reason: String },
+    InvalidMatrix {
+        /// What is wrong with it.
+        reason: String,
+    },
     /// A scrambler name that no registry entry has.
-    UnknownScrambler { name: String, known: Vec<String> },
+    UnknownScrambler {
+        /// The name given.
+        name: String,
+        /// The registry's names.
+        known: Vec<String>,
+    },
     /// A scrambler option that the named scrambler does not accept, or a bad value.
     InvalidOption {
+        /// The scrambler's name.
         scrambler: String,
+        /// The option given.
         option: String,
+        /// Why it is refused.
         reason: String,
     },
 }

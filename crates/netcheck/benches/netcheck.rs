@@ -1,4 +1,5 @@
 //! Checker speed: counting-path sequence check, a 16-D base-16 net check, and the rank path.
+#![allow(missing_docs)] // criterion_group! defines an undocumented public function
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use gartowen_core::Width;

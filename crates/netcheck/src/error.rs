@@ -10,35 +10,72 @@ pub enum NetError {
     /// A base that must be 2^q (rank path) but is not.
     NotPowerOfTwo(u64),
     /// The point count is not b^m for the requested or implied m.
-    NotAPowerOfBase { n: usize, base: u64 },
+    NotAPowerOfBase {
+        /// The point count.
+        n: usize,
+        /// The base b.
+        base: u64,
+    },
     /// N ≠ b^m for an explicit m.
-    WrongCount { n: usize, base: u64, m: u32 },
+    WrongCount {
+        /// The point count.
+        n: usize,
+        /// The base b.
+        base: u64,
+        /// The m asked for.
+        m: u32,
+    },
     /// t > m.
-    TooLargeT { t: u32, m: u32 },
+    TooLargeT {
+        /// The t asked for.
+        t: u32,
+        /// The net's m.
+        m: u32,
+    },
     /// No points.
     Empty,
     /// Zero dimensions, or rows of differing length.
     BadShape(String),
     /// A coordinate that is NaN, outside [0,1) or not an exact dyadic; names point and dimension.
     BadValue {
+        /// Point index.
         point: usize,
+        /// Dimension index.
         dim: usize,
+        /// What is wrong with the value.
         reason: String,
     },
     /// A dimension index past the point set's dimensions.
-    NoSuchDimension { dim: usize, dims: usize },
+    NoSuchDimension {
+        /// The dimension asked for.
+        dim: usize,
+        /// The point set's dimensions.
+        dims: usize,
+    },
     /// Too many shapes to enumerate.
-    TooManyShapes { shapes: u128, limit: u128 },
+    TooManyShapes {
+        /// Shapes the request needs.
+        shapes: u128,
+        /// The most allowed.
+        limit: u128,
+    },
     /// The shapes would take more memory than [`crate::shapes::SHAPE_BYTES_LIMIT`] (each holds
     /// one digit count per dimension).
     ShapesTooLarge {
+        /// Shapes the request needs.
         shapes: u128,
+        /// Dimensions of each shape.
         dims: usize,
+        /// Bytes they would take.
         bytes: u128,
+        /// The most allowed, in bytes.
         limit: u128,
     },
     /// Generator matrices too large for the rank path (more than 64 columns or rows used).
-    TooManyBits { bits: u32 },
+    TooManyBits {
+        /// Bits the rank path would need.
+        bits: u32,
+    },
     /// A projection list that could not be parsed.
     BadProjection(String),
 }

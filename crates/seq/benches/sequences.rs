@@ -1,5 +1,6 @@
 //! Random access and Gray-code iteration, in time per 32-bit coordinate
 //! (criterion's throughput is set to the number of coordinates produced).
+#![allow(missing_docs)] // criterion_group! defines an undocumented public function
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use gartowen_core::{SplitMix64, Width};

@@ -9,16 +9,29 @@ pub enum SeqError {
     NoDimensions,
     /// More dimensions than the sequence defines.
     TooManyDimensions {
+        /// The sequence's name.
         sequence: String,
+        /// Dimensions asked for.
         requested: usize,
+        /// Dimensions it defines.
         max: usize,
     },
     /// A sequence name that does not exist.
     UnknownSequence(String),
     /// An index at or past 2^(index bits).
-    IndexOutOfRange { index: u64, index_bits: u32 },
+    IndexOutOfRange {
+        /// The index given.
+        index: u64,
+        /// Index bits the sequence has.
+        index_bits: u32,
+    },
     /// A word width that the sequence does not support.
-    UnsupportedWidth { sequence: String, bits: u32 },
+    UnsupportedWidth {
+        /// The sequence's name.
+        sequence: String,
+        /// The width asked for, in bits.
+        bits: u32,
+    },
     /// An element outside the field, or a field size that is not built in.
     InvalidField(String),
 }

@@ -14,8 +14,9 @@
 /// be inspected.
 #[cfg(unix)]
 pub fn pipe_inode(fd: std::os::unix::io::RawFd) -> Option<u64> {
-    // SAFETY: fstat writes into a zeroed stat buffer we own; a bad fd only returns -1.
+    // SAFETY: a zeroed `stat` is a valid value of the plain C struct.
     let mut st: libc::stat = unsafe { std::mem::zeroed() };
+    // SAFETY: fstat writes into the stat buffer we own; a bad fd only returns -1.
     let rc = unsafe { libc::fstat(fd, &mut st) };
     (rc == 0 && st.st_mode & libc::S_IFMT == libc::S_IFIFO).then_some(st.st_ino as u64)
 }

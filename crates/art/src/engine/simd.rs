@@ -46,6 +46,7 @@ pub(super) unsafe fn walk_avx512<const SB: u32>(
     // SAFETY (loads and stores here and below): unaligned 64-byte accesses inside `block`
     // (GROUPS · 8 words, asserted) and [u64; 8] arrays.
     let mut bits: [__m512i; GROUPS] = std::array::from_fn(|g| {
+        // SAFETY: 8 words from g·8 lie inside `block` (GROUPS · 8 words, asserted).
         let x = unsafe { _mm512_loadu_si512(block[g * LANES..].as_ptr().cast()) };
         _mm512_sll_epi64(_mm512_xor_si512(x, shift_a), count(64 - w))
     });
@@ -83,6 +84,7 @@ pub(super) unsafe fn walk_avx512<const SB: u32>(
                 let pending = _mm512_sll_epi64(acc[g], count(consumed));
                 let t = _mm512_srl_epi64(_mm512_xor_si512(pending, code), count(64 - r));
                 let x = _mm512_xor_si512(
+                    // SAFETY: 8 words from g·8 lie inside `block` (asserted above).
                     unsafe { _mm512_loadu_si512(block[g * LANES..].as_ptr().cast()) },
                     shift_a,
                 );
@@ -90,6 +92,7 @@ pub(super) unsafe fn walk_avx512<const SB: u32>(
                 y = _mm512_or_si512(_mm512_sll_epi64(y, count(r)), _mm512_xor_si512(tail, t));
             }
             let y = _mm512_xor_si512(y, shift_d);
+            // SAFETY: 8 words from g·8 lie inside `block` (asserted above).
             unsafe { _mm512_storeu_si512(block[g * LANES..].as_mut_ptr().cast(), y) };
         }
         return None;
@@ -97,6 +100,7 @@ pub(super) unsafe fn walk_avx512<const SB: u32>(
     Some(std::array::from_fn(|g| {
         let mut acc_out = [0u64; LANES];
         let mut s_out = [0u64; LANES];
+        // SAFETY: each store writes 8 words into an 8-word array we own.
         unsafe {
             _mm512_storeu_si512(acc_out.as_mut_ptr().cast(), acc[g]);
             _mm512_storeu_si512(s_out.as_mut_ptr().cast(), s[g]);
