@@ -412,3 +412,129 @@ fn the_standard_methods_are_the_six_of_the_issue() {
         ]
     );
 }
+
+#[test]
+fn the_scene_report_describes_its_scenes_and_judges_art_against_owen() {
+    use gartowen_bench::scene::report::{configs, HEADLINE_SIZES};
+    use std::sync::Mutex;
+    let registry = gartowen::registry();
+    let sz16 = gartowen::seq::SequenceKind::Sz16;
+    let methods = ["art-owen-16p", "owen-oracle:base=16", "art-owen-2"]
+        .iter()
+        .map(|r| SceneMethod::registry(&registry, sz16, r).unwrap())
+        .collect();
+    let roulette = gartowen_bench::scene::roulette::RouletteScene::default();
+    let roulette_reference = roulette.reference(0);
+    let plan = ScenePlan {
+        scenes: vec![Box::new(TwoPixels), Box::new(roulette)],
+        methods,
+        layouts: vec![],
+        quick: true,
+        seed: 4,
+        margin: 0.1,
+    };
+    let calls = Mutex::new(Vec::new());
+    let report = run_scenes(&plan, &|done, total, _| {
+        calls.lock().unwrap().push((done, total))
+    })
+    .unwrap();
+    assert_eq!(
+        calls.into_inner().unwrap(),
+        (1..=6).map(|d| (d, 6)).collect::<Vec<_>>()
+    );
+    let (single, image) = configs(true, 4);
+    let two = &report.scenes[0];
+    assert_eq!((two.name.as_str(), two.pixels), ("two-pixels", 2));
+    assert_eq!(two.reference_mean, 1.0);
+    assert_eq!(two.reference_image, vec![0.5, 1.5]);
+    assert_eq!(two.slots, vec!["u:1".to_string()]);
+    assert_eq!(report.scenes[1].reference_mean, roulette_reference);
+    assert!(report.scenes[1].reference_image.is_empty());
+    // Multi-pixel scenes use the image sizes and seeds and, in quick mode, one scattered layout.
+    assert_eq!(
+        (report.results[0].n.clone(), report.results[0].seeds),
+        (image.sizes, image.seeds)
+    );
+    assert_eq!(report.results[0].layouts.len(), 2);
+    assert_eq!(
+        (report.results[3].n.clone(), report.results[3].seeds),
+        (single.sizes.clone(), single.seeds)
+    );
+    assert_eq!(report.results[3].layouts.len(), 14 + 3);
+    // ART against Owen: one row per scene and common headline size, the ratio of pooled MSEs.
+    let rows: Vec<(String, usize)> = report
+        .equivalence
+        .iter()
+        .map(|e| (e.scene.clone(), e.n))
+        .collect();
+    let mut expected = vec![("two-pixels".to_string(), 64)];
+    expected.extend(HEADLINE_SIZES.iter().map(|&n| ("roulette".to_string(), n)));
+    assert_eq!(rows, expected);
+    let (art, owen) = (&report.results[3], &report.results[4]);
+    let e = &report.equivalence[1];
+    let s = art.n.iter().position(|&n| n == e.n).unwrap();
+    assert_eq!(e.judgement.ratio, art.pooled_mse[s] / owen.pooled_mse[s]);
+    let log_se = ((art.pooled_mse_se[s] / art.pooled_mse[s]).powi(2)
+        + (owen.pooled_mse_se[s] / owen.pooled_mse[s]).powi(2))
+    .sqrt();
+    assert!((e.judgement.log_se - log_se).abs() < 1e-12);
+    // The headline's SE of ln(ratio) from the two layouts' relative standard errors.
+    let h = report
+        .headline
+        .iter()
+        .find(|h| h.scene == "roulette" && h.which == "worst" && h.n == 64)
+        .unwrap();
+    let b2 = &report.results[5];
+    let worst = |r: &SceneResult, s: usize| {
+        r.layouts
+            .iter()
+            .max_by(|a, b| a.rmse[s].total_cmp(&b.rmse[s]))
+            .map(|l| l.rmse_se[s] / l.rmse[s])
+            .unwrap()
+    };
+    let s = art.n.iter().position(|&n| n == 64).unwrap();
+    assert!((h.log_se - worst(art, s).hypot(worst(b2, s))).abs() < 1e-12);
+
+    // A user layout replaces the candidates of its scene only.
+    let plan = ScenePlan {
+        scenes: vec![Box::new(
+            gartowen_bench::scene::roulette::RouletteScene::default(),
+        )],
+        methods: vec![SceneMethod::random()],
+        layouts: vec![
+            ("direct".into(), Layout::packed(4)),
+            (
+                "roulette".into(),
+                Layout {
+                    dims: vec![3, 9, 12],
+                },
+            ),
+        ],
+        quick: true,
+        seed: 4,
+        margin: 0.1,
+    };
+    let r = run_scenes(&plan, &|_, _, _| {}).unwrap();
+    assert_eq!(r.results[0].layouts.len(), 1);
+    assert_eq!(r.results[0].layouts[0].dims, vec![3, 9, 12]);
+
+    // A baseline is comparable only where scene, method and some N meet.
+    use gartowen_bench::scene::report::{answer_in_words, comparable_with};
+    assert_eq!(
+        comparable_with(&r, &plan),
+        vec![("roulette".to_string(), "random".to_string())]
+    );
+    assert!(comparable_with(&report, &plan).is_empty());
+
+    // The words name every significant worst/best verdict of the paper's pair, with its ratio.
+    let words = answer_in_words(&report);
+    assert!(words.contains("**roulette**"), "{words}");
+    for h in report.headline.iter().filter(|h| {
+        h.base16 == "sz16+art-owen-16p"
+            && h.which != "median"
+            && h.verdict != "no difference detected"
+    }) {
+        let needle = format!("N = {} (×{:.2})", h.n, h.ratio);
+        assert!(words.contains(&needle), "{needle} missing from {words}");
+    }
+}
