@@ -14,19 +14,17 @@ fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
+/// `scene --quick --scene roulette --out OUT`, which must succeed.
+fn quick_roulette(out: &str) {
+    let o = gartowen(&["scene", "--quick", "--scene", "roulette", "--out", out]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+}
+
 #[test]
 fn a_quick_roulette_run_writes_its_report_and_the_baseline_gate_works() {
     let dir = tempfile::tempdir().unwrap();
     let path = |p: &str| dir.path().join(p).to_str().unwrap().to_string();
-    let o = gartowen(&[
-        "scene",
-        "--quick",
-        "--scene",
-        "roulette",
-        "--out",
-        &path("a"),
-    ]);
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    quick_roulette(&path("a"));
     for f in ["scene.md", "scene.json", "scene-roulette.png"] {
         assert!(dir.path().join("a").join(f).exists(), "{f}");
     }
@@ -198,15 +196,7 @@ fn an_external_twin_measures_exactly_like_the_built_in() {
 fn a_baseline_that_compares_nothing_is_refused() {
     let dir = tempfile::tempdir().unwrap();
     let path = |p: &str| dir.path().join(p).to_str().unwrap().to_string();
-    let o = gartowen(&[
-        "scene",
-        "--quick",
-        "--scene",
-        "roulette",
-        "--out",
-        &path("a"),
-    ]);
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    quick_roulette(&path("a"));
     // Another scene, or only other methods: nothing in common.
     for args in [
         &["--scene", "defocus"][..],

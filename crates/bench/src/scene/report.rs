@@ -223,25 +223,38 @@ pub const HEADLINE_PAIRS: [(&str, &str); 2] = [
 /// Sizes the headline reports (where measured).
 pub const HEADLINE_SIZES: [usize; 5] = [64, 100, 256, 1000, 4096];
 
+/// For each scene where both `a` and `b` were measured: the two results and the
+/// [`HEADLINE_SIZES`] both have, with their indices in each.
+type Paired<'r> = (&'r SceneResult, &'r SceneResult, Vec<(usize, usize, usize)>);
+
+fn paired<'r>(results: &'r [SceneResult], a: &str, b: &str) -> Vec<Paired<'r>> {
+    results
+        .iter()
+        .filter(|r| r.method == a)
+        .filter_map(|ra| {
+            let rb = results
+                .iter()
+                .find(|r| r.method == b && r.scene == ra.scene)?;
+            let sizes = HEADLINE_SIZES
+                .iter()
+                .filter_map(|n| {
+                    let sa = ra.n.iter().position(|x| x == n)?;
+                    let sb = rb.n.iter().position(|x| x == n)?;
+                    Some((*n, sa, sb))
+                })
+                .collect();
+            Some((ra, rb, sizes))
+        })
+        .collect()
+}
+
 /// Base 16 against binary per scene, N in [`HEADLINE_SIZES`] and worst/median/best layout,
 /// with the Bonferroni critical z over all rows.
 pub fn headline(results: &[SceneResult]) -> (Vec<HeadlineRow>, f64) {
     let mut rows = Vec::new();
     for (b16, b2) in HEADLINE_PAIRS {
-        for a in results.iter().filter(|r| r.method == b16) {
-            let Some(b) = results
-                .iter()
-                .find(|r| r.method == b2 && r.scene == a.scene)
-            else {
-                continue;
-            };
-            for &n in &HEADLINE_SIZES {
-                let (Some(sa), Some(sb)) = (
-                    a.n.iter().position(|&x| x == n),
-                    b.n.iter().position(|&x| x == n),
-                ) else {
-                    continue;
-                };
+        for (a, b, sizes) in paired(results, b16, b2) {
+            for (n, sa, sb) in sizes {
                 let (ea, eb) = (extremes(a, sa), extremes(b, sb));
                 for (k, which) in ["best", "median", "worst"].iter().enumerate() {
                     let (ia, ra) = ea[k];
@@ -303,21 +316,7 @@ pub fn equivalence_rows(results: &[SceneResult], margin: f64) -> Vec<SceneEquiva
     use gartowen::battery::equivalence::{judge, ratio_of_means, EquivalenceSettings};
     let mut rows = Vec::new();
     for (imp, reference) in EQUIVALENCE_PAIRS {
-        for a in results.iter().filter(|r| r.method == imp) {
-            let Some(b) = results
-                .iter()
-                .find(|r| r.method == reference && r.scene == a.scene)
-            else {
-                continue;
-            };
-            let sizes: Vec<(usize, usize, usize)> = HEADLINE_SIZES
-                .iter()
-                .filter_map(|n| {
-                    let sa = a.n.iter().position(|x| x == n)?;
-                    let sb = b.n.iter().position(|x| x == n)?;
-                    Some((*n, sa, sb))
-                })
-                .collect();
+        for (a, b, sizes) in paired(results, imp, reference) {
             let Some(settings) = EquivalenceSettings::new(
                 margin,
                 gartowen::battery::equivalence::DEFAULT_ALPHA,
