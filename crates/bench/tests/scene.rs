@@ -538,3 +538,20 @@ fn the_scene_report_describes_its_scenes_and_judges_art_against_owen() {
         assert!(words.contains(&needle), "{needle} missing from {words}");
     }
 }
+
+#[test]
+fn the_pooled_mse_is_the_mean_over_layouts() {
+    let scene = gartowen_bench::scene::roulette::RouletteScene::default();
+    let layouts = candidate_layouts(scene.slots(), 0, 1)[..3].to_vec();
+    let r = measure_scene(
+        &scene,
+        &SceneMethod::random(),
+        &layouts,
+        &config(vec![16, 64], 4),
+    )
+    .unwrap();
+    for s in 0..2 {
+        let mean = r.layouts.iter().map(|l| l.rmse[s].powi(2)).sum::<f64>() / 3.0;
+        assert!((r.pooled_mse[s] - mean).abs() <= 1e-12 * mean, "{s}");
+    }
+}
