@@ -461,6 +461,9 @@ fn the_scene_report_describes_its_scenes_and_judges_art_against_owen() {
         (single.sizes.clone(), single.seeds)
     );
     assert_eq!(report.results[3].layouts.len(), 14 + 3);
+    // Renders are kept for multi-pixel scenes only.
+    assert_eq!(report.results[0].render.len(), 2);
+    assert!(report.results[3].render.is_empty());
     // ART against Owen: one row per scene and common headline size, the ratio of pooled MSEs.
     let rows: Vec<(String, usize)> = report
         .equivalence
@@ -554,4 +557,13 @@ fn the_pooled_mse_is_the_mean_over_layouts() {
         let mean = r.layouts.iter().map(|l| l.rmse[s].powi(2)).sum::<f64>() / 3.0;
         assert!((r.pooled_mse[s] - mean).abs() <= 1e-12 * mean, "{s}");
     }
+}
+
+#[test]
+fn extremes_are_best_lower_median_and_worst() {
+    use gartowen_bench::scene::measure::extremes;
+    let r = synthetic("s", "m", &[4.0, 1.0, 3.0, 2.0], 0.1);
+    assert_eq!(extremes(&r, 0), [(1, 1.0), (3, 2.0), (0, 4.0)]);
+    let r = synthetic("s", "m", &[5.0, 1.0, 3.0], 0.1);
+    assert_eq!(extremes(&r, 0), [(1, 1.0), (2, 3.0), (0, 5.0)]);
 }
