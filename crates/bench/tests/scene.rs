@@ -567,3 +567,48 @@ fn extremes_are_best_lower_median_and_worst() {
     let r = synthetic("s", "m", &[5.0, 1.0, 3.0], 0.1);
     assert_eq!(extremes(&r, 0), [(1, 1.0), (2, 3.0), (0, 5.0)]);
 }
+
+#[test]
+fn a_baseline_file_must_be_a_scene_report_of_this_version() {
+    use gartowen_bench::scene::report::read_scene_baseline;
+    let dir = std::env::temp_dir().join(format!("gartowen-scene-baseline-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let report = run_scenes(
+        &ScenePlan {
+            scenes: vec![Box::new(
+                gartowen_bench::scene::defocus::DefocusScene::default(),
+            )],
+            methods: vec![SceneMethod::random()],
+            layouts: vec![("defocus".into(), Layout::packed(5))],
+            quick: true,
+            seed: 2,
+            margin: 0.1,
+        },
+        &|_, _, _| {},
+    )
+    .unwrap();
+    let mut v = serde_json::to_value(&report).unwrap();
+    let good = dir.join("good.json");
+    std::fs::write(&good, v.to_string()).unwrap();
+    assert_eq!(read_scene_baseline(&good).unwrap(), report);
+    for (field, value) in [
+        ("schema", serde_json::json!("gartowen-report")),
+        ("schema_version", serde_json::json!(2)),
+    ] {
+        let old = v[field].clone();
+        v[field] = value;
+        let bad = dir.join("bad.json");
+        std::fs::write(&bad, v.to_string()).unwrap();
+        let e = read_scene_baseline(&bad).unwrap_err();
+        assert!(e.contains("not a gartowen.scene-report version 1"), "{e}");
+        v[field] = old;
+    }
+    std::fs::write(dir.join("junk.json"), "{").unwrap();
+    assert!(read_scene_baseline(&dir.join("junk.json"))
+        .unwrap_err()
+        .contains("not JSON"));
+    assert!(read_scene_baseline(&dir.join("missing.json"))
+        .unwrap_err()
+        .contains("cannot read"));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
