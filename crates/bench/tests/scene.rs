@@ -531,15 +531,26 @@ fn the_scene_report_describes_its_scenes_and_judges_art_against_owen() {
 
     // The words name every significant worst/best verdict of the paper's pair, with its ratio.
     let words = answer_in_words(&report);
-    assert!(words.contains("**roulette**"), "{words}");
-    for h in report.headline.iter().filter(|h| {
-        h.base16 == "sz16+art-owen-16p"
-            && h.which != "median"
-            && h.verdict != "no difference detected"
-    }) {
+    let line = words
+        .lines()
+        .find(|l| l.starts_with("- **roulette**"))
+        .expect("a roulette paragraph");
+    let significant: Vec<_> = report
+        .headline
+        .iter()
+        .filter(|h| {
+            h.scene == "roulette"
+                && h.base16 == "sz16+art-owen-16p"
+                && h.which != "median"
+                && h.verdict != "no difference detected"
+        })
+        .collect();
+    assert!(!significant.is_empty());
+    for h in &significant {
         let needle = format!("N = {} (×{:.2})", h.n, h.ratio);
-        assert!(words.contains(&needle), "{needle} missing from {words}");
+        assert!(line.contains(&needle), "{needle} missing from {line}");
     }
+    assert_eq!(line.matches("N = ").count(), significant.len(), "{line}");
 }
 
 #[test]
