@@ -27,10 +27,15 @@ const SLOTS: &[Slot] = &[
     },
 ];
 
+/// The most nonzero terms [`probability_at_least`] takes (its cost is 2^terms rational
+/// powers).
+pub const MAX_TERMS: usize = 16;
+
 /// P(Σ a_i U_i ≥ t) for independent uniforms U_i on [0, 1), exactly in rationals
 /// (inclusion–exclusion over the cube's vertices: Vol{Σ b_i x_i ≤ s} =
 /// Σ_S (−1)^|S| (s − Σ_S b)₊ⁿ / (n! Π b) for b_i > 0; negative coefficients are flipped,
-/// U ↦ 1 − U, and zero ones dropped). `None` for non-finite input or more than 20 terms.
+/// U ↦ 1 − U, and zero ones dropped). `None` for non-finite input or more than
+/// [`MAX_TERMS`] nonzero terms.
 pub fn probability_at_least(coefficients: &[f64], threshold: f64) -> Option<f64> {
     let q = |x: f64| BigRational::from_float(x);
     let mut s = q(threshold)?;
@@ -45,7 +50,7 @@ pub fn probability_at_least(coefficients: &[f64], threshold: f64) -> Option<f64>
             b.push(a);
         }
     }
-    if b.len() > 20 {
+    if b.len() > MAX_TERMS {
         return None;
     }
     let n = b.len();
@@ -178,6 +183,38 @@ mod tests {
         // P(U1 − U2 ≥ 0) = 1/2, P(U1 − U2 ≥ 0.5) = 1/8.
         assert_eq!(probability_at_least(&[1.0, -1.0], 0.0), Some(0.5));
         assert_eq!(probability_at_least(&[1.0, -1.0], 0.5), Some(0.125));
+    }
+
+    #[test]
+    fn at_most_max_terms_nonzero_terms_are_taken() {
+        // Sixteen halves: P(Σ U/2 ≥ 4) = 1/2 by symmetry; zero terms do not count.
+        let mut a = vec![0.5; MAX_TERMS];
+        a.push(0.0);
+        assert_eq!(probability_at_least(&a, 4.0), Some(0.5));
+        a.push(0.5);
+        assert_eq!(probability_at_least(&a, 4.0), None);
+    }
+
+    #[test]
+    fn the_linear_form_follows_the_geometry() {
+        // n = (cos 0.5, sin 0.5); y = p + c(2l − 1) − v t e_x with c = 0.35, v = 0.6.
+        let (a, t) = DefocusScene::default().linear_form();
+        let (cs, sn) = (0.5f64.cos(), 0.5f64.sin());
+        let expect = [cs, sn, 0.7 * cs, 0.7 * sn, -0.6 * cs];
+        for (x, y) in a.iter().zip(expect) {
+            assert!((x - y).abs() < 1e-15, "{a:?}");
+        }
+        assert!((t - (0.55 + 0.35 * (cs + sn))).abs() < 1e-15);
+        // The estimator is the indicator of that form.
+        let s = DefocusScene::default();
+        for u in [
+            [0.9, 0.9, 0.5, 0.5, 0.0],
+            [0.1, 0.1, 0.5, 0.5, 1.0],
+            [0.6, 0.3, 0.9, 0.2, 0.4],
+        ] {
+            let lhs: f64 = a.iter().zip(&u).map(|(a, u)| a * u).sum();
+            assert_eq!(s.estimate(0, &u), if lhs >= t { 1.0 } else { 0.0 }, "{u:?}");
+        }
     }
 
     #[test]
