@@ -82,3 +82,25 @@ pub fn scene_by_name(name: &str) -> Result<Box<dyn Scene>, String> {
         )),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_scene_is_found_by_its_name_and_says_what_it_estimates() {
+        let scenes = all_scenes();
+        let names: Vec<&str> = scenes.iter().map(|s| s.name()).collect();
+        assert_eq!(names, ["roulette", "direct", "defocus", "image"]);
+        for s in &scenes {
+            let again = scene_by_name(s.name()).unwrap();
+            assert_eq!((again.name(), again.slots()), (s.name(), s.slots()));
+            assert!(s.summary().len() > 20, "{}", s.name());
+        }
+        let summaries: std::collections::HashSet<&str> =
+            scenes.iter().map(|s| s.summary()).collect();
+        assert_eq!(summaries.len(), scenes.len());
+        let e = scene_by_name("teapot").err().unwrap();
+        assert!(e.contains("roulette, direct, defocus, image"), "{e}");
+    }
+}
