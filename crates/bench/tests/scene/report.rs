@@ -257,3 +257,40 @@ fn a_baseline_file_must_be_a_scene_report_of_this_version() {
         .contains("cannot read"));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn a_regression_is_named_by_its_own_scene_and_method() {
+    let registry = gartowen::registry();
+    let lk =
+        SceneMethod::registry(&registry, gartowen::seq::SequenceKind::Sobol, "lk-hash").unwrap();
+    let mut now = run_scenes(
+        &ScenePlan {
+            scenes: vec![Box::new(
+                gartowen_bench::scene::defocus::DefocusScene::default(),
+            )],
+            methods: vec![SceneMethod::random(), lk],
+            layouts: vec![("defocus".into(), Layout::packed(5))],
+            quick: true,
+            seed: 3,
+            margin: 0.1,
+        },
+        &|_, _, _| {},
+    )
+    .unwrap();
+    for r in &mut now.results {
+        for l in &mut r.layouts {
+            l.rmse_se.iter_mut().for_each(|s| *s = 0.0);
+        }
+    }
+    // The baseline was 30% better for random points only.
+    let mut base = now.clone();
+    for l in &mut base.results[0].layouts {
+        l.rmse.iter_mut().for_each(|r| *r /= 1.3);
+    }
+    let regs = compare_scenes(&base, &now);
+    assert_eq!(regs.len(), 2 * now.results[0].n.len(), "{regs:?}");
+    assert!(
+        regs.iter().all(|r| r.what.starts_with("defocus random:")),
+        "{regs:?}"
+    );
+}
