@@ -141,6 +141,7 @@ fn the_scene_report_describes_its_scenes_and_judges_art_against_owen() {
         + (owen.pooled_mse_se[s] / owen.pooled_mse[s]).powi(2))
     .sqrt();
     assert!((e.judgement.log_se - log_se).abs() < 1e-12);
+    assert_eq!(e.judgement.seeds, art.seeds * art.pixels as u64);
     // The headline's SE of ln(ratio) from the two layouts' relative standard errors.
     let h = report
         .headline
@@ -188,6 +189,12 @@ fn the_scene_report_describes_its_scenes_and_judges_art_against_owen() {
         vec![("roulette".to_string(), "random".to_string())]
     );
     assert!(comparable_with(&report, &plan).is_empty());
+    // A single-estimator scene is compared at its own sizes, not the image's.
+    let mut late = r.clone();
+    let last = late.results[0].n.len() - 1;
+    late.results[0].n = vec![late.results[0].n[last]];
+    assert_eq!(late.results[0].n, vec![4096]);
+    assert_eq!(comparable_with(&late, &plan).len(), 1);
 
     // The words name every significant worst/best verdict of the paper's pair, with its ratio.
     let words = answer_in_words(&report);
