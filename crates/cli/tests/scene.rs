@@ -14,6 +14,11 @@ fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
+/// The scene.json written into `out`.
+fn scene_json(out: &std::path::Path) -> serde_json::Value {
+    serde_json::from_str(&std::fs::read_to_string(out.join("scene.json")).unwrap()).unwrap()
+}
+
 /// `scene --quick --scene roulette --out OUT`, which must succeed.
 fn quick_roulette(out: &str) {
     let o = gartowen(&["scene", "--quick", "--scene", "roulette", "--out", out]);
@@ -32,8 +37,7 @@ fn a_quick_roulette_run_writes_its_report_and_the_baseline_gate_works() {
     let md = std::fs::read_to_string(path("a/scene.md")).unwrap();
     assert!(md.contains("Base 16 against binary"), "{md}");
     assert!(md.contains("sz16+art-owen-16p"));
-    let json: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(path("a/scene.json")).unwrap()).unwrap();
+    let json = scene_json(&dir.path().join("a"));
     assert_eq!(json["schema"], "gartowen.scene-report");
     assert_eq!(json["results"].as_array().unwrap().len(), 6);
 
@@ -95,8 +99,7 @@ fn a_user_layout_and_scrambler_are_measured_alone() {
         out.to_str().unwrap(),
     ]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let json: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(out.join("scene.json")).unwrap()).unwrap();
+    let json = scene_json(&out);
     let results = json["results"].as_array().unwrap();
     assert_eq!(results.len(), 1);
     assert_eq!(results[0]["method"], "sobol+owen-per-bit-hash");
@@ -179,8 +182,7 @@ fn an_external_twin_measures_exactly_like_the_built_in() {
         out.to_str().unwrap(),
     ]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let json: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(out.join("scene.json")).unwrap()).unwrap();
+    let json = scene_json(&out);
     let results = json["results"].as_array().unwrap();
     assert_eq!(results.len(), 2);
     assert_eq!(results[0]["method"], "sobol+owen-per-bit-hash");
