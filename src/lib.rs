@@ -22,9 +22,12 @@ pub mod testing;
 /// The conformance battery (`gartowen verify`), from the `gartowen-verify` crate.
 pub mod verify {
     pub use gartowen_verify::battery::*;
-    pub use gartowen_verify::law::{Requirement, SubTest};
     pub use gartowen_verify::sampling::SeedBuilder;
-    pub use gartowen_verify::{dimensions, joint, laws, marginal, nets, pair_lemma, stats};
+    pub use gartowen_verify::subtest::{Requirement, SubTest};
+    pub use gartowen_verify::{
+        collisions, dimensions, family, flip_rank, law_runner, level, marginal, nets, pair_law,
+        pair_lemma, stats, structure,
+    };
 }
 
 /// Every scrambler gartowen knows, in one list; cross-checks iterate over it.

@@ -5,8 +5,8 @@
 use gartowen::art::{ArtMutant, ArtOwen, ArtVariant};
 use gartowen::core::{Claim, Scrambler, Width};
 use gartowen::verify::{
-    check_candidate, judge_families, laws::run_laws, registry_candidate, verify_shard, Candidate,
-    ImplReport, Level, Shard, Verdict,
+    check_candidate, judge_families, law_runner::run_laws, registry_candidate, verify_shard,
+    Candidate, ImplReport, Level, Shard, Verdict,
 };
 use std::collections::HashSet;
 

@@ -7,6 +7,7 @@ pub mod exact_laws;
 pub mod full_tree;
 pub mod inspector;
 pub mod node_draw;
+pub mod owen_definition;
 pub mod owen_variance;
 pub mod registry;
 

@@ -373,7 +373,7 @@ fn verify(
         },
         json!({
             "level": level_value,
-            "node_law_seeds": gartowen::verify::node_law_seeds(level_value),
+            "node_law_seeds": level_value.plan().law_seeds,
             "family_alpha": gartowen::verify::stats::FAMILY_ALPHA,
             "claim_override": claim,
             "python": { "function": name, "base": base, "width": width, "seed": seed,

@@ -11,4 +11,5 @@ pub mod report;
 pub mod scene;
 pub mod spectrum;
 pub mod speed;
+pub mod staged;
 pub mod tradeoff;

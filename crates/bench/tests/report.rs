@@ -4,7 +4,7 @@
 use gartowen_bench::figures::{loglog_lines, panel_grid, Panel, Series};
 use gartowen_bench::report::{compare, markdown, Report};
 
-mod common;
+use crate::common;
 use common::report;
 
 #[test]

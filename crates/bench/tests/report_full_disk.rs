@@ -2,7 +2,7 @@
 //! report.md). Its own test binary: the file-size limit that stands in for a full disk
 //! applies to the whole process.
 
-mod common;
+use crate::common;
 
 use std::collections::BTreeMap;
 use std::os::unix::fs::MetadataExt;

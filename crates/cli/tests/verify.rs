@@ -66,6 +66,58 @@ fn verify_named_implementations_writes_json_and_exits_0() {
     // Every law sub-test carries its p-value and power.
     let sub = &imps[0]["checks"][3]["tests"][0];
     assert!(sub["p_value"].is_number() && sub["power"].as_str().unwrap().len() > 10);
+
+    // The declared listing names what the run reported, in the same order (the checks that
+    // do not apply to a registry entry, `injective` and `expect`, left out).
+    let listed = dir.path().join("list.json");
+    let o = gartowen(&[
+        "verify",
+        "--list-checks",
+        "--json",
+        listed.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0));
+    assert!(
+        o.stdout.is_empty(),
+        "the listing goes to the JSON file only"
+    );
+    let list: serde_json::Value = serde_json::from_slice(&std::fs::read(&listed).unwrap()).unwrap();
+    let declared: Vec<&str> = list["checks"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| c["name"].as_str().unwrap())
+        .filter(|n| !["injective", "expect"].contains(n))
+        .collect();
+    assert_eq!(declared, names);
+    let quick = &list["levels"][0];
+    assert_eq!(quick["level"], "quick");
+    let node_law = &imps[0]["checks"][3];
+    assert_eq!(
+        node_law["tests"][0]["n"], quick["law_seeds"],
+        "node-law draws the plan's seeds at quick"
+    );
+}
+
+#[test]
+fn list_checks_prints_the_battery_and_refuses_a_run_alongside() {
+    let o = gartowen(&["verify", "--list-checks"]);
+    assert_eq!(o.status.code(), Some(0));
+    let text = String::from_utf8_lossy(&o.stdout);
+    let at = |name: &str| {
+        text.find(&format!("  {name} "))
+            .unwrap_or_else(|| panic!("{name} listed"))
+    };
+    assert!(at("inverse") < at("nets") && at("nets") < at("node-law"));
+    assert!(at("node-law") < at("dimensions") && at("dimensions") < at("expect"));
+    assert!(text.contains("| seeds of the per-seed laws | 2,000 | 10,000 | 50,000 |"));
+    let o = gartowen(&["verify", "--list-checks", "--impl", "lk-hash"]);
+    assert_eq!(
+        o.status.code(),
+        Some(2),
+        "a listing does not run implementations"
+    );
+    assert!(o.stdout.is_empty());
 }
 
 #[test]

@@ -86,8 +86,7 @@ pub struct SequenceReport {
     pub first_failure: Option<SequenceFailure>,
 }
 
-/// Reports progress in units of shapes checked; called from many threads.
-pub type Progress<'a> = &'a (dyn Fn(u64) + Sync);
+pub use crate::Progress;
 
 fn no_progress(_: u64) {}
 

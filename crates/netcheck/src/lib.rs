@@ -22,6 +22,9 @@ mod shape_tree;
 pub mod shapes;
 pub mod snap;
 
+/// Reports progress in units of shapes checked; called from many threads.
+pub type Progress<'a> = &'a (dyn Fn(u64) + Sync);
+
 pub use base::CheckBase;
 pub use counting::{BoxFailure, NetReport, SequenceFailure, SequenceReport, ShapeHistogram};
 pub use error::NetError;

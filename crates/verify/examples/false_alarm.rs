@@ -5,7 +5,7 @@
 //! `cargo run --release -p gartowen-verify --example false_alarm -- owen-oracle 200`
 use gartowen_core::{Claim, Registry};
 use gartowen_verify::battery::{judge_families, registry_candidate, Level, Verdict};
-use gartowen_verify::laws::run_laws;
+use gartowen_verify::law_runner::run_laws;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();

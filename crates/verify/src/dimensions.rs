@@ -8,9 +8,11 @@
 //! * root pairs: the root permutations' π(0) of dimension pairs (0,1), (0,2), (1,2), (0,7),
 //!   (3,8), (0,63), over independent seeds, against uniform × uniform (χ²).
 
-use crate::law::{uniform, LawConfig, Requirement, SubTest};
+use crate::expected::uniform;
+use crate::family::{LawConfig, LawFamily, OwnPass};
 use crate::sampling::{fold, folded_size, Probe};
 use crate::stats::chi_square;
+use crate::subtest::{Requirement, SubTest};
 use gartowen_core::SplitMix64;
 use std::collections::HashMap;
 
@@ -21,13 +23,8 @@ pub const DISTINCT_DIMS: u32 = 64;
 pub const DISTINCT_WORDS: usize = 256;
 const ROOT_PAIRS: [(u32, u32); 6] = [(0, 1), (0, 2), (1, 2), (0, 7), (3, 8), (0, 63)];
 
-/// Seeds of the distinctness test.
-pub fn distinct_seeds(cfg: &LawConfig) -> u64 {
-    20 * cfg.scale
-}
-
 /// Distinctness probes: the same sampled words in every dimension 0..64.
-pub fn distinct_probes(cfg: &LawConfig) -> Vec<Probe> {
+fn distinct_probes(cfg: &LawConfig) -> Vec<Probe> {
     let mask = cfg.tree.layout.width().mask();
     let mut rng = SplitMix64::new(WORDS_SEED);
     let words: Vec<u64> = (0..DISTINCT_WORDS).map(|_| rng.next_u64() & mask).collect();
@@ -35,13 +32,13 @@ pub fn distinct_probes(cfg: &LawConfig) -> Vec<Probe> {
         .map(|dim| Probe {
             dim,
             words: words.clone(),
-            seeds: distinct_seeds(cfg),
+            seeds: cfg.plan.distinct_seeds,
         })
         .collect()
 }
 
 /// One exact sub-test: the first seed and pair of dimensions that coincide, if any.
-pub fn distinct_analyse(outputs: &[&[Vec<u64>]]) -> SubTest {
+fn distinct_analyse(outputs: &[&[Vec<u64>]]) -> SubTest {
     let mut equal_pairs = 0u64;
     let mut first = None;
     for (seed, seed_out) in outputs.iter().enumerate() {
@@ -77,20 +74,20 @@ pub fn distinct_analyse(outputs: &[&[Vec<u64>]]) -> SubTest {
 }
 
 /// Root-pair probes: the zero word in both dimensions of each pair.
-pub fn root_probes(cfg: &LawConfig) -> Vec<Probe> {
+fn root_probes(cfg: &LawConfig) -> Vec<Probe> {
     ROOT_PAIRS
         .iter()
         .flat_map(|&(a, b)| [a, b])
         .map(|dim| Probe {
             dim,
             words: vec![0],
-            seeds: cfg.seeds,
+            seeds: cfg.plan.law_seeds,
         })
         .collect()
 }
 
 /// χ² of (π_a(0), π_b(0)) per dimension pair.
-pub fn root_analyse(cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
+fn root_analyse(cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
     let b = cfg.tree.b();
     let f = folded_size(b);
     ROOT_PAIRS
@@ -111,4 +108,37 @@ pub fn root_analyse(cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
             )
         })
         .collect()
+}
+
+/// The `dimensions` family: the distinct test in a pass of its own (its own seed count), the
+/// root pairs in the shared pass.
+pub struct Dimensions;
+
+impl LawFamily for Dimensions {
+    fn name(&self) -> &'static str {
+        "dimensions"
+    }
+
+    fn requires(&self) -> &'static [Requirement] {
+        &[Requirement::Marginal, Requirement::Independent]
+    }
+
+    fn what(&self) -> &'static str {
+        "dimensions 0..64 distinct on 256 words; root permutations of 6 dimension pairs independent"
+    }
+
+    fn shared_probes(&self, cfg: &LawConfig) -> Vec<Probe> {
+        root_probes(cfg)
+    }
+
+    fn analyse_shared(&self, cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
+        root_analyse(cfg, outputs)
+    }
+
+    fn own_pass(&self, cfg: &LawConfig, pass: &OwnPass) -> Result<Vec<SubTest>, String> {
+        let probes = distinct_probes(cfg);
+        let out = pass.evaluate(0, &probes)?;
+        let views: Vec<&[Vec<u64>]> = out.iter().map(|o| o.as_slice()).collect();
+        Ok(vec![distinct_analyse(&views)])
+    }
 }

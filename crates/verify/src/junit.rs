@@ -3,7 +3,7 @@
 //! message and the measured value for each failing check, and the certificate's path in
 //! `<system-out>`. Written with the `quick-junit` crate.
 
-use crate::battery::{CheckResult, ImplReport, Verdict};
+use crate::verdict::{CheckResult, ImplReport, Verdict};
 use quick_junit::{NonSuccessKind, Report, TestCase, TestCaseStatus, TestSuite};
 use std::time::Duration;
 

@@ -9,9 +9,11 @@
 //! * G = S_b with b ≥ 8: the affine fraction, the share of nodes with π(3) = π(0)⊕π(1)⊕π(2),
 //!   which is 1/(b − 3) under S_b and 1 for affine families (one-sided binomial test).
 
-use crate::law::{pair_image_law, LawConfig, Requirement, SubTest};
+use crate::expected::pair_image_law;
+use crate::family::{LawConfig, LawFamily};
 use crate::sampling::{prefix_name, Probe};
 use crate::stats::chi_square;
+use crate::subtest::{Requirement, SubTest};
 use gartowen_core::{NodeGroup, SplitMix64};
 use statrs::distribution::{Binomial, DiscreteCDF};
 
@@ -35,14 +37,14 @@ fn nodes(cfg: &LawConfig) -> Vec<Vec<u32>> {
 }
 
 /// The probes: for each depth, the words (prefix, d) for the observed digits d, dimension 0.
-pub fn probes(cfg: &LawConfig) -> Vec<Probe> {
+fn probes(cfg: &LawConfig) -> Vec<Probe> {
     let ds = observed(cfg.tree.b());
     nodes(cfg)
         .into_iter()
         .map(|p| Probe {
             dim: 0,
             words: ds.iter().map(|&d| cfg.tree.word(&p, d)).collect(),
-            seeds: cfg.seeds,
+            seeds: cfg.plan.law_seeds,
         })
         .collect()
 }
@@ -74,7 +76,7 @@ fn lehmer(imgs: &[u32]) -> usize {
 }
 
 /// The sub-tests, from `outputs[seed][probe]` of this family's probes.
-pub fn analyse(cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
+fn analyse(cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
     let (b, g) = (cfg.tree.b(), cfg.group());
     let f = crate::sampling::folded_size(b);
     let mut tests = Vec::new();
@@ -127,7 +129,7 @@ pub fn analyse(cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
             deviates: false,
         });
         let law = if full_perm {
-            crate::law::uniform(cells)
+            crate::expected::uniform(cells)
         } else {
             pair_image_law(g, b, 0, 1)
         };
@@ -171,6 +173,31 @@ pub fn analyse(cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
         }
     }
     tests
+}
+
+/// The `node-law` family.
+pub struct NodeLaw;
+
+impl LawFamily for NodeLaw {
+    fn name(&self) -> &'static str {
+        "node-law"
+    }
+
+    fn requires(&self) -> &'static [Requirement] {
+        &[Requirement::Marginal]
+    }
+
+    fn what(&self) -> &'static str {
+        "one node per depth 0..D (dim 0): every permutation in the claimed group, uniform over it"
+    }
+
+    fn shared_probes(&self, cfg: &LawConfig) -> Vec<Probe> {
+        probes(cfg)
+    }
+
+    fn analyse_shared(&self, cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
+        analyse(cfg, outputs)
+    }
 }
 
 #[cfg(test)]

@@ -15,7 +15,8 @@
 //! tail handling disturbs a full digit is caught here; the tail digit itself is checked by
 //! `nested` (16-bit words: base 8 has a 1-bit tail there).
 
-use crate::battery::{Level, Verdict};
+use crate::level::Level;
+use crate::verdict::Verdict;
 use gartowen_core::{PowerOfTwoBase, Scrambler, Width};
 use gartowen_netcheck::{counting::t_value, rank, CheckBase, PointSet};
 use gartowen_seq::SequenceKind;
@@ -30,15 +31,6 @@ pub fn net_sequence(base: PowerOfTwoBase) -> (SequenceKind, Vec<usize>) {
     }
 }
 
-/// log2 of the most points a net of the level has.
-fn max_log2_points(level: Level) -> u32 {
-    match level {
-        Level::Quick => 12,
-        Level::Full => 16,
-        Level::Exhaustive => 18,
-    }
-}
-
 /// Every base 2^(kq) ≤ 256 a base-2^q scramble is nested in, its own first.
 pub fn nested_bases(base: PowerOfTwoBase) -> Vec<PowerOfTwoBase> {
     let q = base.q();
@@ -50,7 +42,7 @@ pub fn nested_bases(base: PowerOfTwoBase) -> Vec<PowerOfTwoBase> {
 /// The largest m the check uses in `base` at `level`: b^m within the level's size, but at
 /// least 2 (in base 256, 65,536 points), so every base has boxes in two coordinates at once.
 pub fn max_m(base: PowerOfTwoBase, level: Level) -> u32 {
-    (max_log2_points(level) / base.q()).max(2)
+    (level.plan().net_log2_points / base.q()).max(2)
 }
 
 /// One base's net check: `Ok(summary)` when every m keeps its t-value, `Err(detail)` naming

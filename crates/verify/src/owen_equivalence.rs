@@ -22,9 +22,10 @@
 //! uniform pair of distinct digits, the rest independent and uniform), and Cov = 1/12 for equal
 //! inputs. A digital shift keeps y_i ⊕ y_k fixed and misses it by far.
 
-use crate::battery::{CheckResult, Level, Verdict};
 use crate::equivalence::{judge, Equivalence, EquivalenceSettings, EquivalenceVerdict};
+use crate::level::Level;
 use crate::sampling::{evaluate, Probe, SeedBuilder};
+use crate::verdict::{CheckResult, Verdict};
 use gartowen_core::{DigitLayout, PowerOfTwoBase, SplitMix64, Width};
 use gartowen_oracles::owen_variance::owen_box_variance;
 use std::time::Instant;
@@ -37,11 +38,7 @@ pub const POINTS: usize = 64;
 
 /// Seeds of the `--equivalent-to owen` check at each level.
 pub fn equivalence_seeds(level: Level) -> u64 {
-    match level {
-        Level::Quick => 10_000,
-        Level::Full => 40_000,
-        Level::Exhaustive => 100_000,
-    }
+    level.plan().equivalence_seeds
 }
 
 /// The fewest expected points in the box, summed over seeds, for a level to be judged for

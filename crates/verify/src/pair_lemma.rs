@@ -11,9 +11,11 @@
 //! * digit r + 1: (y_{r+1}, y'_{r+1}) against uniform × uniform: an independence claim. A digital
 //!   shift fails it at every r (y ⊕ y' is the inputs' difference).
 
-use crate::law::{pair_image_law, uniform, LawConfig, Requirement, SubTest};
+use crate::expected::{pair_image_law, uniform};
+use crate::family::{LawConfig, LawFamily};
 use crate::sampling::{fold, folded_size, Probe};
 use crate::stats::chi_square;
+use crate::subtest::{Requirement, SubTest};
 use gartowen_core::SplitMix64;
 
 const LEMMA_SEED: u64 = 0x6c65_6d6d; // "lemm"
@@ -41,19 +43,19 @@ fn pairs(cfg: &LawConfig) -> Vec<(u32, u64, u64)> {
 }
 
 /// One probe per r: the two words.
-pub fn probes(cfg: &LawConfig) -> Vec<Probe> {
+fn probes(cfg: &LawConfig) -> Vec<Probe> {
     pairs(cfg)
         .into_iter()
         .map(|(_, u, v)| Probe {
             dim: 0,
             words: vec![u, v],
-            seeds: cfg.seeds,
+            seeds: cfg.plan.law_seeds,
         })
         .collect()
 }
 
 /// Two χ² sub-tests per r.
-pub fn analyse(cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
+fn analyse(cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
     let tree = &cfg.tree;
     let b = tree.b();
     let f = folded_size(b) as usize;
@@ -87,4 +89,29 @@ pub fn analyse(cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
         ));
     }
     tests
+}
+
+/// The `pair-lemma` family.
+pub struct PairLemma;
+
+impl LawFamily for PairLemma {
+    fn name(&self) -> &'static str {
+        "pair-lemma"
+    }
+
+    fn requires(&self) -> &'static [Requirement] {
+        &[Requirement::Marginal, Requirement::Independent]
+    }
+
+    fn what(&self) -> &'static str {
+        "inputs first differing at digit r: digits r distinct and uniform; digits r+1 independent and uniform"
+    }
+
+    fn shared_probes(&self, cfg: &LawConfig) -> Vec<Probe> {
+        probes(cfg)
+    }
+
+    fn analyse_shared(&self, cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
+        analyse(cfg, outputs)
+    }
 }

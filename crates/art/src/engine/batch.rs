@@ -26,11 +26,8 @@
 //! Words wider than 32 bits walk the scalar path's split tables (64-bit carries), interleaved
 //! the same way. Both are bit-identical to the scalar path (tested on every registry entry).
 
-use super::{ArtOwen, Step};
+use super::{ArtOwen, Step, LANES};
 use gartowen_core::Width;
-
-/// Chains advanced together: enough independent loads in flight to hide an L2 hit.
-pub(super) const LANES: usize = 8;
 
 /// The fewest words left after the whole blocks that the gather kernels take as one
 /// zero-padded block rather than leave to the portable lanes.
@@ -218,7 +215,7 @@ impl ArtOwen {
         let steps = w / SB;
         #[cfg(target_arch = "x86_64")]
         let words = if PACKED && self.kernel != BatchKernel::Portable {
-            use super::simd::GROUPS;
+            use super::GROUPS;
             let mut blocks = words.chunks_exact_mut(GROUPS * LANES);
             for block in &mut blocks {
                 self.gather_block::<SB>(block, root, a, d, w);
@@ -257,7 +254,7 @@ impl ArtOwen {
         }
     }
 
-    /// One block of [`super::simd::GROUPS`] · [`LANES`] words (W ≤ 32) through this
+    /// One block of [`super::GROUPS`] · [`LANES`] words (W ≤ 32) through this
     /// scrambler's gather kernel, scrambled in place.
     #[cfg(target_arch = "x86_64")]
     #[inline(always)]

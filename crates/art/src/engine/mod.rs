@@ -36,6 +36,15 @@ mod simd;
 
 pub use batch::{BatchKernel, BATCH_TABLE_BYTES};
 
+/// Chains the batch path advances together: enough independent loads in flight to hide an L2
+/// hit (one 512-bit register of the gather kernel).
+const LANES: usize = 8;
+
+/// Independent registers of eight lanes walked together, so that one register's gather
+/// latency is hidden behind the others'.
+#[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
+const GROUPS: usize = 6;
+
 use crate::dims::{dimension_key, root_symbol, DimKey};
 use crate::record::ArtRecord;
 use crate::{ArtVariant, Grammar};

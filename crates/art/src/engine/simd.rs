@@ -2,12 +2,8 @@
 //! in one 512-bit register each for the input bits, the symbols and the accumulators, and one
 //! gather per step for the eight table entries. Same arithmetic, same words.
 
-use super::batch::LANES;
+use super::{GROUPS, LANES};
 use std::arch::x86_64::*;
-
-/// Independent registers of eight lanes walked together, so that one register's gather
-/// latency is hidden behind the others'.
-pub(super) const GROUPS: usize = 6;
 
 /// The lanes' state after the whole steps, for the words whose last bits the scalar code
 /// finishes: accumulator and symbol per lane.

@@ -11,11 +11,12 @@ mod markdown;
 mod plots;
 mod staging;
 
+pub use crate::staged::{staging_dir, write_staged};
 pub use build::{build_report, measure_quality, slope_rows};
 pub use compare::{compare, read_baseline, Regression};
 pub use markdown::markdown;
 pub use plots::write_figures;
-pub use staging::{staging_dir, write_report, write_staged};
+pub use staging::write_report;
 
 use crate::curves::sz16_words;
 pub use crate::curves::{curve_seeds, discrepancy_curves, DiscrepancyCurve};
@@ -32,7 +33,7 @@ use gartowen::discrepancy::expected::expected_l2star_random;
 use gartowen::seq::SequenceKind;
 use gartowen::verify::{verify, Level, Verdict};
 use serde::{Deserialize, Serialize};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::time::Instant;
 
 /// Seeds whose periodograms Figure 1 averages.

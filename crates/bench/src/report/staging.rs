@@ -1,6 +1,7 @@
 //! Writing the report all or nothing: staged files moved into place when complete.
 
 use super::*;
+use crate::staged::write_staged;
 
 /// Writes report.json, report.md and the figures into `dir`; returns the regressions against
 /// `baseline` (empty without one). All or nothing: every file is written into
@@ -22,38 +23,6 @@ pub fn write_report(
     })
     .map_err(ReportError::Io)?;
     Ok(regressions.unwrap_or_default())
-}
-
-/// Creates `dir`, lets `stage` write files into [`staging_dir`] (returning their names), and
-/// moves them into `dir` only when all are complete, so a write error (a full disk) leaves
-/// `dir` as it was, an earlier report in it intact, and no staging folder behind.
-pub fn write_staged(
-    dir: &Path,
-    stage: impl FnOnce(&Path) -> Result<Vec<String>, String>,
-) -> Result<(), String> {
-    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
-    let staging = staging_dir(dir);
-    // A staging folder left by a killed run of this pid would only hold stale files.
-    let _ = std::fs::remove_dir_all(&staging);
-    std::fs::create_dir(&staging)
-        .map_err(|e| format!("cannot create {}: {e}", staging.display()))?;
-    let moved = stage(&staging).and_then(|names| {
-        // Renames within one folder need no space: once every file is staged, the report
-        // cannot stop half-written.
-        for name in &names {
-            std::fs::rename(staging.join(name), dir.join(name))
-                .map_err(|e| format!("cannot write {}: {e}", dir.join(name).display()))?;
-        }
-        Ok(())
-    });
-    let _ = std::fs::remove_dir_all(&staging);
-    moved
-}
-
-/// The folder inside `dir` where [`write_report`] writes every file before moving them into
-/// place (named by the process id, so two runs into one folder do not share it).
-pub fn staging_dir(dir: &Path) -> PathBuf {
-    dir.join(format!(".report-staging-{}", std::process::id()))
 }
 
 /// Writes the figures, report.json and report.md into `staging`; returns the file names.

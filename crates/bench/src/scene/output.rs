@@ -204,7 +204,7 @@ pub fn write_scene_report(
     baseline: Option<&SceneReport>,
 ) -> Result<Vec<SceneRegression>, String> {
     let regressions = baseline.map(|b| compare_scenes(b, report));
-    crate::report::write_staged(dir, |staging| {
+    crate::staged::write_staged(dir, |staging| {
         let mut names = write_scene_figures(report, staging).map_err(|e| e.to_string())?;
         let md = format!(
             "# gartowen scene report\n\n{}",

@@ -6,7 +6,7 @@ use clap::Args;
 use gartowen::core::{BuildContext, Claim, PowerOfTwoBase, Scrambler, Width};
 use gartowen::external::{ExternalProcess, ExternalScrambler};
 use gartowen::oracles::inspector::{inspect_exhaustive, inspect_probes, InspectReport};
-use gartowen::verify::{judge_families, laws::run_laws, Candidate, Level, SeedBuilder};
+use gartowen::verify::{judge_families, law_runner::run_laws, Candidate, Level, SeedBuilder};
 use std::process::ExitCode;
 use std::sync::Arc;
 

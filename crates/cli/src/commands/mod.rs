@@ -12,6 +12,7 @@ pub mod scramble;
 pub mod shards;
 pub mod sweep;
 pub mod verify;
+pub mod verify_args;
 
 use crate::CliError;
 use gartowen::core::{Claim, PowerOfTwoBase, Width};

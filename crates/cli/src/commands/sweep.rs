@@ -2,7 +2,7 @@
 //! depth on all 2^32 words of each dimension), sharded by dimension and word range, merged by
 //! `verify --merge` into one certificate.
 
-use super::verify::VerifyArgs;
+use super::verify_args::{program_record, LevelArg, VerifyArgs};
 use crate::CliError;
 use gartowen::certificate::{CertVerdict, Certificate, InputRecord};
 use gartowen::core::{Claim, PowerOfTwoBase, Scrambler, Width};
@@ -154,7 +154,7 @@ fn targets(a: &VerifyArgs) -> Result<Vec<Target>, CliError> {
 
 /// Runs the sweep (or this shard's part of it).
 pub fn run(a: &VerifyArgs, dims_text: &str) -> Result<ExitCode, CliError> {
-    if a.level != super::verify::LevelArg::Exhaustive {
+    if a.level != LevelArg::Exhaustive {
         return Err(CliError::Usage(
             "--dims runs the every-word sweep, which is --level exhaustive".into(),
         ));
@@ -216,7 +216,7 @@ pub fn run(a: &VerifyArgs, dims_text: &str) -> Result<ExitCode, CliError> {
         }),
     };
     let inputs: Vec<InputRecord> = match &a.external {
-        Some(c) => vec![super::verify::program_record(c)],
+        Some(c) => vec![program_record(c)],
         None => targets
             .iter()
             .map(|t| InputRecord {

@@ -1,8 +1,8 @@
 //! `gartowen verify`: the conformance battery over the registry or named implementations.
 
+pub use super::verify_args::{program_record, LevelArg, VerifyArgs};
 use crate::CliError;
-use clap::{Args, ValueEnum};
-use gartowen::certificate::{fnv1a64, CertVerdict, Certificate, InputRecord};
+use gartowen::certificate::{CertVerdict, Certificate, InputRecord};
 use gartowen::core::{Claim, PowerOfTwoBase, Width};
 use gartowen::verify::{
     check_candidate, external_candidate, merge, verify_shard, ImplReport, Level, Shard, Verdict,
@@ -11,143 +11,27 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::sync::Arc;
 
-/// Battery size.
-#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
-pub enum LevelArg {
-    /// Under a minute for the whole registry on 2 cores.
-    Quick,
-    /// Larger samples and deeper nets.
-    Full,
-    /// Long (minutes); split it with --shard and combine with --merge.
-    Exhaustive,
-}
-
-/// Run the conformance battery. Structure is checked exactly: inverse (injectivity for external
-/// programs), nestedness (inspector), net preservation in the scrambling base. Randomness is
-/// checked by laws over independent seeds:
-///   node-law    each node permutation uniform over the claimed group, depths 0..12 (marginal)
-///   pair-law    pairs of nodes (siblings, parent-child, cousins, distant) independent (joint)
-///   flip-rank   no exact GF(2) relation among node flips of depths ≤ D, dims 0-1 (joint)
-///   collisions  no two subtrees alike within one seed (joint; finite tables show here)
-///   pair-lemma  Owen's pair lemma for inputs first differing at digit r (marginal + joint)
-///   dimensions  dimensions 0..64 distinct (marginal) and root pairs independent (joint)
-///
-/// Each implementation is judged only on what it claims (`gartowen list` shows the claims;
-/// --claim overrides them): `nested`, `marginal:GROUP` (node permutations uniform over
-/// symmetric|affine|translation|cyclic), `independent:GROUP`, or `owen` (= independent:symmetric).
-/// Unclaimed checks are `measured`. The family-wise false-alarm rate of a run is 1e-3
-/// (Bonferroni over implementations and sub-tests); a pass reads "no deviation detected at this
-/// power", and each sub-test's power (smallest Cohen's w at power 0.9, or what an exact test
-/// detects) is in the JSON. The profile line shows, per family and depth 0, 1, 2, …, where an
-/// implementation departs from Owen: `.` nothing detected, `x` deviation, `-` not tested.
-///
-/// Prints a table (implementation × check). Exit codes: 0 every check passed, 1 a check
-/// failed, 2 bad usage or input, 3 the external program failed (crash, exit, hang, garbage).
-///
-/// Examples:
-///   gartowen verify --level quick
-///   gartowen verify --impl art-owen-16p --impl lk-hash --json verify.json
-///   gartowen verify --impl digital-shift --impl lk-hash --claim owen     (imitations fail)
-///   gartowen verify --level exhaustive --shard 2/4 --json shard2.json     (one CI job of four)
-///   gartowen verify --merge shard1.json shard2.json shard3.json shard4.json --json all.json
-///
-/// Every word (--level exhaustive --dims A..B): all 2^32 inputs of each dimension, in order,
-/// through the batch path, proving bijective and nested at every depth (3-40 s per dimension
-/// for built-ins on 2 cores, about 1 min for the C example over pipes; under 50 MB of memory).
-/// Scramblers without 32-bit support are swept at 24 bits; 64-bit words are refused (2^64 words
-/// cannot be enumerated; the sampled checks apply). --shard I/N cuts the (implementation,
-/// dimension, chunk) units into N contiguous runs, so N dividing the dimensions shards by
-/// dimension and other N split inside dimensions; --merge joins the shards and refuses a
-/// missing, doubled or foreign one:
-///   gartowen verify --level exhaustive --dims 0..3 --impl art-owen-2 --impl lk-hash
-///   gartowen verify --level exhaustive --dims 0..1023 --impl art-owen-2 --shard 7/32 --json s7.json
-///   gartowen verify --level exhaustive --dims 0..3 --external ./lk_hash --base 2 --claim nested
-///
-/// External implementations (the protocol is in docs/external.md):
-///   gartowen verify --external './my_scrambler --fast' --base 16 --width 32
-///   gartowen verify --external ./owen_per_bit --base 2 --width 64 --expect owen-per-bit-hash
-///
-/// Equivalence to Owen (the estimator variance against the exact Owen variance of the base,
-/// TOST with a stated margin; the seeds used are printed and in the JSON):
-///   gartowen verify --impl art-owen-16p --equivalent-to owen --margin 0.1
-///   gartowen verify --external ./owen_nested --base 16 --equivalent-to owen --equivalence-seeds 4000
-#[derive(Args, Debug)]
-#[command(verbatim_doc_comment)]
-pub struct VerifyArgs {
-    /// Battery size.
-    #[arg(long, value_enum, default_value_t = LevelArg::Quick)]
-    pub level: LevelArg,
-    /// Implementations to verify (registry names, with options); default: all.
-    #[arg(long = "impl")]
-    pub implementations: Vec<String>,
-    /// Also write the report as JSON to this file.
-    #[arg(long)]
-    pub json: Option<PathBuf>,
-    /// Run only shard I of N (1 ≤ I ≤ N): implementation k goes to shard (k mod N) + 1.
-    #[arg(long)]
-    pub shard: Option<String>,
-    /// Combine shard JSON files (from --json) into one report instead of running checks.
-    #[arg(long, num_args = 1.., conflicts_with_all = ["shard", "implementations"])]
-    pub merge: Vec<PathBuf>,
-    /// Verify an external program speaking the gartowen protocol instead of the registry
-    /// (the command line is split on spaces; quotes group; no shell is involved).
-    #[arg(long, conflicts_with_all = ["implementations", "merge"])]
-    pub external: Option<String>,
-    /// Every-word sweep of dimensions A..B (both included; or one dimension A) with
-    /// --level exhaustive: every 2^32 input word of each dimension (2^24 for scramblers without
-    /// 32-bit support) is scrambled and checked for bijectivity and nestedness at every depth,
-    /// in one streaming pass. 64-bit words cannot be enumerated (2^64 words) and are refused;
-    /// the sampled levels (without --dims) check them.
-    #[arg(long, conflicts_with_all = ["merge", "expect", "junit"])]
-    pub dims: Option<String>,
-    /// Scrambling base of the external program (a power of two, 2..=256).
-    #[arg(long, default_value_t = 2, requires = "external")]
-    pub base: u64,
-    /// Word width the external program receives: 32 or 64.
-    #[arg(long, default_value_t = 32, requires = "external")]
-    pub width: u32,
-    /// Seed of the external program's main instance (the node law uses seeds 0, 1, 2, …).
-    #[arg(long, default_value_t = 0, requires = "external")]
-    pub seed: u64,
-    /// Require bit-exact agreement with this built-in implementation (registry name).
-    #[arg(long, requires = "external")]
-    pub expect: Option<String>,
-    /// Seconds to wait for each reply before the program is killed.
-    #[arg(long, default_value_t = 10.0, requires = "external")]
-    pub timeout: f64,
-    /// The external program does not claim any law (same as --claim nested).
-    #[arg(long, requires = "external", conflicts_with = "claim")]
-    pub no_uniform_claim: bool,
-    /// Also write JUnit XML (one testsuite per implementation, one testcase per check).
-    #[arg(long)]
-    pub junit: Option<PathBuf>,
-    /// Judge on this claim instead of each implementation's own: nested | owen |
-    /// `marginal[:GROUP]` | `independent:GROUP` (GROUP: symmetric, affine, translation, cyclic).
-    /// External programs default to owen.
-    #[arg(long)]
-    pub claim: Option<String>,
-    /// Also test equivalence to the full-tree Owen scramble of the implementation's base: the
-    /// variance of a box-volume estimator (64 fixed points, boxes of 1, 2 and 3 digits) over
-    /// seeds 0..S, divided by its exact Owen value, must have its 90% interval inside
-    /// [1 − margin, 1 + margin] at every level (TOST, α = 0.05). Check `equivalent-to-owen`:
-    /// pass = equivalent; fail = different, or inconclusive with the seeds that would decide.
-    #[arg(long, value_parser = ["owen"], conflicts_with_all = ["merge", "dims"])]
-    pub equivalent_to: Option<String>,
-    /// Equivalence margin on the variance ratio (0 < margin < 1).
-    #[arg(long, default_value_t = gartowen::battery::equivalence::DEFAULT_MARGIN,
-          value_parser = super::parse_margin, requires = "equivalent_to")]
-    pub margin: f64,
-    /// Seeds of the equivalence check (default: 1000 quick, 10000 full, 50000 exhaustive;
-    /// at most 1000000).
-    #[arg(long, value_parser = clap::value_parser!(u64).range(2..=1_000_000),
-          requires = "equivalent_to")]
-    pub equivalence_seeds: Option<u64>,
-}
-
 /// The seeds of the equivalence check at `level`.
 fn equivalence_seeds(a: &VerifyArgs, level: Level) -> u64 {
     a.equivalence_seeds
         .unwrap_or_else(|| gartowen::battery::owen_equivalence::equivalence_seeds(level))
+}
+
+/// `--list-checks`: the declared battery as text on standard output, or as JSON in `json`.
+fn list_checks(json: Option<&std::path::Path>) -> Result<ExitCode, CliError> {
+    use gartowen::battery::listing::{listing, listing_text};
+    crate::output::write_atomically(json.or(Some(std::path::Path::new("-"))), |out| {
+        match json {
+            Some(_) => {
+                serde_json::to_writer_pretty(&mut *out, &listing())
+                    .map_err(|e| CliError::Io(e.to_string()))?;
+                out.write_all(b"\n")
+            }
+            None => out.write_all(listing_text().as_bytes()),
+        }
+        .map_err(|e| CliError::Io(e.to_string()))
+    })?;
+    Ok(ExitCode::SUCCESS)
 }
 
 fn level_name(level: Level) -> &'static str {
@@ -310,24 +194,6 @@ fn run_external(
     Ok((report, process.failure().map(|e| e.to_string())))
 }
 
-/// The certificate's record of an external program: its command line and, where the program
-/// file can be read, the checksum of its bytes.
-pub(crate) fn program_record(command: &str) -> InputRecord {
-    let program = gartowen::external::split_command(command)
-        .ok()
-        .and_then(|w| w.into_iter().next());
-    let checksum = program
-        .as_ref()
-        .and_then(|p| std::fs::read(p).ok())
-        .map(|bytes| format!("{:016x}", fnv1a64(&bytes)));
-    InputRecord {
-        kind: "program".into(),
-        name: command.into(),
-        checksum_fnv1a64: checksum,
-        details: serde_json::json!({ "program": program }),
-    }
-}
-
 /// Whether `path` is a certificate of the every-word sweep (its merge is the sweep's).
 fn is_sweep_certificate(path: &PathBuf) -> bool {
     std::fs::read_to_string(path)
@@ -338,6 +204,9 @@ fn is_sweep_certificate(path: &PathBuf) -> bool {
 
 /// Runs `verify`.
 pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
+    if a.list_checks {
+        return list_checks(a.json.as_deref());
+    }
     if a.merge.first().is_some_and(is_sweep_certificate) {
         return super::sweep::merge(&a.merge, a.json.as_ref());
     }
@@ -436,7 +305,7 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
     if let Some(path) = &a.json {
         let mut parameters = serde_json::json!({
             "level": level,
-            "node_law_seeds": gartowen::verify::node_law_seeds(level),
+            "node_law_seeds": level.plan().law_seeds,
             "family_alpha": gartowen::verify::stats::FAMILY_ALPHA,
             "claim_override": claim_override,
             // What a merge needs to refuse an incomplete or mixed set of shards.

@@ -29,7 +29,7 @@ mod kernels;
 mod tests;
 
 use crate::box_keys::{check_shape, CHUNK};
-use crate::counting::Progress;
+use crate::Progress;
 use crate::{BoxFailure, CheckBase};
 use kernels::{
     extend_all_pow2, extend_pow2, extend_with, set_key_bits, set_lane_bits, DigitColumn,

@@ -1,0 +1,16 @@
+//! The integration tests of this package, one module per concern, built as one test binary
+//! (one link instead of one per file).
+
+mod adversarial;
+mod art;
+mod check;
+mod discrepancy;
+mod generate;
+mod junit;
+mod oracle;
+mod report;
+mod scene;
+mod scramble;
+mod stdout_errors;
+mod sweep;
+mod verify;

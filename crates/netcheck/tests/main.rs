@@ -1,0 +1,6 @@
+//! The integration tests of this package, one module per concern, built as one test binary
+//! (one link instead of one per file).
+
+mod cross_check;
+mod determinism;
+mod faure;

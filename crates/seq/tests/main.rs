@@ -1,0 +1,5 @@
+//! The integration tests of this package, one module per concern, built as one test binary
+//! (one link instead of one per file).
+
+mod sobol;
+mod sz;

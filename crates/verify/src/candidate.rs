@@ -1,0 +1,127 @@
+//! The implementations the battery judges, however they are reached: registry entries,
+//! external programs, or any in-process builder of instances per seed.
+
+use crate::sampling::SeedBuilder;
+use gartowen_core::{BuildContext, Claim, CoreError, PowerOfTwoBase, Registry, Scrambler};
+
+/// One implementation as the battery sees it, however it is reached (registry or external).
+pub struct Candidate<'a> {
+    /// Position in the list being verified.
+    pub index: usize,
+    /// Name for the report.
+    pub name: String,
+    /// The instance with the run's seed (0 for registry entries).
+    pub probe: Box<dyn Scrambler + 'a>,
+    /// Instances for other seeds (the node law draws thousands).
+    pub with_seed: Box<SeedBuilder<'a>>,
+    /// Whether `unscramble` is a real inverse (false for external programs: the battery then
+    /// checks injectivity instead).
+    pub invertible: bool,
+    /// A failure of the transport, checked after every check (external programs).
+    pub health: Box<dyn Fn() -> Option<String> + 'a>,
+    /// A built-in twin the implementation must agree with bit for bit (`--expect`).
+    pub twin: Option<(String, Box<SeedBuilder<'a>>)>,
+    /// What the implementation is judged on (its own claim unless overridden).
+    pub claim: Claim,
+}
+
+impl<'a> Candidate<'a> {
+    /// An invertible in-process candidate judged on `claim`, with instances from `with_seed`
+    /// (the probe is seed 0's instance).
+    pub fn from_builder(
+        name: impl Into<String>,
+        claim: Claim,
+        with_seed: Box<SeedBuilder<'a>>,
+    ) -> Result<Candidate<'a>, String> {
+        Ok(Candidate {
+            index: 0,
+            name: name.into(),
+            probe: with_seed(0)?,
+            with_seed,
+            invertible: true,
+            health: Box::new(|| None),
+            twin: None,
+            claim,
+        })
+    }
+}
+
+/// Instances of registry entry `request` for any seed, in `base` unless the request names one.
+pub fn registry_seeds<'a>(
+    registry: &'a Registry,
+    request: &'a str,
+    base: PowerOfTwoBase,
+) -> Box<SeedBuilder<'a>> {
+    Box::new(move |seed| {
+        registry
+            .build_with(
+                request,
+                &BuildContext {
+                    seed,
+                    default_base: base,
+                },
+            )
+            .map_err(|e| e.to_string())
+    })
+}
+
+/// The candidate for registry entry `request` at position `index`.
+pub fn registry_candidate<'a>(
+    registry: &'a Registry,
+    request: &'a str,
+    index: usize,
+) -> Result<Candidate<'a>, CoreError> {
+    let probe = registry.build(request, 0)?;
+    let base = probe.base();
+    Ok(Candidate {
+        index,
+        name: probe.name(),
+        claim: probe.claim(),
+        probe,
+        with_seed: registry_seeds(registry, request, base),
+        invertible: true,
+        health: Box::new(|| None),
+        twin: None,
+    })
+}
+
+/// The names given, or every registry entry's name when none is given.
+pub fn names_or_all(registry: &Registry, names: &[String]) -> Vec<String> {
+    if names.is_empty() {
+        registry
+            .specs()
+            .iter()
+            .map(|s| s.name.to_string())
+            .collect()
+    } else {
+        names.to_vec()
+    }
+}
+
+/// The candidate for an external program: instances for every seed share the one process;
+/// `twin` names a registry entry it must match bit for bit.
+pub fn external_candidate<'a>(
+    process: std::sync::Arc<crate::external::ExternalProcess>,
+    seed: u64,
+    claim: Claim,
+    twin: Option<(&'a Registry, &'a str)>,
+) -> Candidate<'a> {
+    use crate::external::ExternalScrambler;
+    let base = process.base();
+    let for_seed = process.clone();
+    let watched = process.clone();
+    Candidate {
+        index: 0,
+        name: format!("external:{}", process.command()),
+        claim,
+        probe: Box::new(ExternalScrambler::new(process, seed, claim)),
+        with_seed: Box::new(move |s| {
+            Ok(Box::new(ExternalScrambler::new(for_seed.clone(), s, claim)))
+        }),
+        invertible: false,
+        health: Box::new(move || watched.failure().map(|e| e.to_string())),
+        twin: twin.map(|(registry, request)| {
+            (request.to_string(), registry_seeds(registry, request, base))
+        }),
+    }
+}

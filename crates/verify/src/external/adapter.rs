@@ -1,0 +1,83 @@
+//! One seed's view of an [`ExternalProcess`] as a [`Scrambler`].
+
+use super::error::ExternalError;
+use super::process::ExternalProcess;
+use super::protocol::MAX_BATCH;
+use gartowen_core::{Claim, PowerOfTwoBase, Scrambler, Width};
+
+use std::sync::Arc;
+
+/// One seed's view of an [`ExternalProcess`] as a [`Scrambler`]. Calls after a failure return 0;
+/// the verify battery reads [`ExternalProcess::failure`] after each check.
+pub struct ExternalScrambler {
+    process: Arc<ExternalProcess>,
+    seed: u64,
+    claim: Claim,
+}
+
+impl ExternalScrambler {
+    /// The scrambler with `seed` on `process`; `claim` is what the user says it is.
+    pub fn new(process: Arc<ExternalProcess>, seed: u64, claim: Claim) -> Self {
+        ExternalScrambler {
+            process,
+            seed,
+            claim,
+        }
+    }
+
+    /// Scrambles a batch in one request.
+    pub fn request(&self, words: &[u64], dim: u32) -> Result<Vec<u64>, ExternalError> {
+        self.process.scramble_batch(self.seed, dim, words)
+    }
+}
+
+impl Scrambler for ExternalScrambler {
+    fn name(&self) -> String {
+        format!("external:{}", self.process.command())
+    }
+    fn base(&self) -> PowerOfTwoBase {
+        self.process.base()
+    }
+    fn claim(&self) -> Claim {
+        self.claim
+    }
+    fn supports_width(&self, width: Width) -> bool {
+        width == self.process.width()
+    }
+    fn scramble(&self, x: u64, _width: Width, dim: u32) -> u64 {
+        self.request(&[x], dim).map(|v| v[0]).unwrap_or_default()
+    }
+    /// One request per [`MAX_BATCH`] words; after a failure the words become 0 (the battery
+    /// reads [`ExternalProcess::failure`]).
+    fn scramble_batch(&self, words: &mut [u64], _width: Width, dim: u32) {
+        for chunk in words.chunks_mut(MAX_BATCH) {
+            match self.request(chunk, dim) {
+                Ok(out) => chunk.copy_from_slice(&out),
+                Err(_) => chunk.fill(0),
+            }
+        }
+    }
+    /// Whole frames of up to [`MAX_BATCH`] words in place, without widening to 64 bits (the
+    /// every-word sweep's path); after a failure the words become 0.
+    fn scramble_batch_u32(&self, words: &mut [u32], dim: u32) {
+        for chunk in words.chunks_mut(MAX_BATCH) {
+            if self
+                .process
+                .scramble_batch_u32(self.seed, dim, chunk)
+                .is_err()
+            {
+                chunk.fill(0);
+            }
+        }
+    }
+    /// The protocol has no inverse; verify checks injectivity instead. This search inverts a
+    /// nested scramble digit by digit (b requests per digit) and is only right for nested ones.
+    fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
+        gartowen_core::invert_nested(
+            &|x| self.scramble(x, width, dim),
+            y,
+            width,
+            self.process.base(),
+        )
+    }
+}

@@ -1,0 +1,166 @@
+//! The protocol's frames as bytes: request encoding and decoding, reply checks (no I/O).
+
+use super::error::ExternalError;
+use gartowen_core::{PowerOfTwoBase, Width};
+
+/// Request magic, `GOWQ`.
+pub const REQUEST_MAGIC: [u8; 4] = *b"GOWQ";
+/// Reply magic, `GOWR`.
+pub const REPLY_MAGIC: [u8; 4] = *b"GOWR";
+/// Protocol version.
+pub const PROTOCOL_VERSION: u16 = 1;
+/// Most words in one request.
+pub const MAX_BATCH: usize = 1 << 20;
+/// Request header length in bytes.
+pub const HEADER_BYTES: usize = 32;
+
+/// The fixed fields of a request.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RequestHeader {
+    /// Word width (32 or 64).
+    pub width: Width,
+    /// Base 2^q.
+    pub base: PowerOfTwoBase,
+    /// Dimension.
+    pub dim: u32,
+    /// Seed.
+    pub seed: u64,
+}
+
+/// Encodes a request frame for `words`.
+pub fn encode_request(h: &RequestHeader, words: &[u64]) -> Result<Vec<u8>, ExternalError> {
+    if words.is_empty() || words.len() > MAX_BATCH {
+        return Err(ExternalError::BadRequest(format!(
+            "{} words (1..={MAX_BATCH} allowed)",
+            words.len()
+        )));
+    }
+    let wb = h.width.bits() as usize / 8;
+    let mut out = Vec::with_capacity(HEADER_BYTES + words.len() * wb);
+    push_header(&mut out, h, words.len());
+    for &w in words {
+        out.extend_from_slice(&w.to_le_bytes()[..wb]);
+    }
+    Ok(out)
+}
+
+/// Appends the 32 header bytes of a request for `count` words (checked by the caller).
+pub(super) fn push_header(out: &mut Vec<u8>, h: &RequestHeader, count: usize) {
+    out.extend_from_slice(&REQUEST_MAGIC);
+    out.extend_from_slice(&PROTOCOL_VERSION.to_le_bytes());
+    out.extend_from_slice(&(h.width.bits() as u16).to_le_bytes());
+    out.extend_from_slice(&h.base.base().to_le_bytes());
+    out.extend_from_slice(&h.dim.to_le_bytes());
+    out.extend_from_slice(&(count as u32).to_le_bytes());
+    out.extend_from_slice(&0u32.to_le_bytes());
+    out.extend_from_slice(&h.seed.to_le_bytes());
+}
+
+/// Decodes a request frame (the child's side; the host uses it in tests and fuzzing):
+/// the header and the words, or a reason the bytes are not one complete frame.
+pub fn decode_request(bytes: &[u8]) -> Result<(RequestHeader, Vec<u64>), String> {
+    if bytes.len() < HEADER_BYTES {
+        return Err(format!(
+            "{} bytes, a header needs {HEADER_BYTES}",
+            bytes.len()
+        ));
+    }
+    if bytes[..4] != REQUEST_MAGIC {
+        return Err(format!("magic {:02x?} is not GOWQ", &bytes[..4]));
+    }
+    let u16_at = |o: usize| u16::from_le_bytes([bytes[o], bytes[o + 1]]);
+    let u32_at = |o: usize| u32::from_le_bytes(bytes[o..o + 4].try_into().expect("4 bytes"));
+    if u16_at(4) != PROTOCOL_VERSION {
+        return Err(format!("protocol version {}", u16_at(4)));
+    }
+    let width = match u16_at(6) {
+        32 => Width::W32,
+        64 => Width::W64,
+        w => return Err(format!("width {w} is not 32 or 64")),
+    };
+    let base = PowerOfTwoBase::from_base(u32_at(8) as u64).map_err(|e| e.to_string())?;
+    let count = u32_at(16) as usize;
+    if count == 0 || count > MAX_BATCH {
+        return Err(format!("count {count} outside 1..={MAX_BATCH}"));
+    }
+    let wb = width.bits() as usize / 8;
+    if bytes.len() != HEADER_BYTES + count * wb {
+        return Err(format!(
+            "{} bytes, the frame needs {}",
+            bytes.len(),
+            HEADER_BYTES + count * wb
+        ));
+    }
+    if u32_at(20) != 0 {
+        return Err(format!("reserved field {:#x} is not 0", u32_at(20)));
+    }
+    let seed = u64::from_le_bytes(bytes[24..32].try_into().expect("8 bytes"));
+    let words = words_from_le(&bytes[HEADER_BYTES..], wb);
+    Ok((
+        RequestHeader {
+            width,
+            base,
+            dim: u32_at(12),
+            seed,
+        },
+        words,
+    ))
+}
+
+/// Decodes a complete reply of `count` words of `width` bits for request `batch`.
+pub fn decode_reply(
+    bytes: &[u8],
+    count: usize,
+    width: Width,
+    batch: u64,
+) -> Result<Vec<u64>, ExternalError> {
+    check_reply(bytes, count, width, batch)?;
+    Ok(words_from_le(&bytes[8..], width.bits() as usize / 8))
+}
+
+/// Checks a complete reply's length, magic and count.
+pub(super) fn check_reply(
+    bytes: &[u8],
+    count: usize,
+    width: Width,
+    batch: u64,
+) -> Result<(), ExternalError> {
+    let wb = width.bits() as usize / 8;
+    let need = 8 + count * wb;
+    if bytes.len() != need {
+        return Err(ExternalError::Garbage {
+            batch,
+            detail: format!("{} bytes, the reply needs {need}", bytes.len()),
+        });
+    }
+    if bytes[..4] != REPLY_MAGIC {
+        return Err(ExternalError::Garbage {
+            batch,
+            detail: format!(
+                "starts with {:?} ({:02x?}), not the reply magic GOWR",
+                String::from_utf8_lossy(&bytes[..4]),
+                &bytes[..4]
+            ),
+        });
+    }
+    let n = u32::from_le_bytes(bytes[4..8].try_into().expect("4 bytes")) as usize;
+    if n != count {
+        return Err(ExternalError::Garbage {
+            batch,
+            detail: format!("reply count {n}, the request had {count}"),
+        });
+    }
+    Ok(())
+}
+
+/// Little-endian words of `wb` bytes each (a trailing partial word is ignored).
+fn words_from_le(bytes: &[u8], wb: usize) -> Vec<u64> {
+    bytes
+        .chunks_exact(wb)
+        .map(|c| {
+            let mut b = [0u8; 8];
+            b[..wb].copy_from_slice(c);
+            u64::from_le_bytes(b)
+        })
+        .collect()
+}

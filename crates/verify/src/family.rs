@@ -1,0 +1,90 @@
+//! The protocol every law family follows ([`LawFamily`]), and the settings they share
+//! ([`LawConfig`]). The declared list of families is [`crate::law_runner::FAMILIES`].
+//!
+//! A family plans probes (words to scramble in one dimension for the first n seeds). Probes of
+//! the shared pass are evaluated once for all families, each seed's instance built once; a
+//! family whose evaluation must be bounded or arranged otherwise (two seeds at a time, other
+//! seed counts) runs a pass of its own through [`OwnPass`], after the shared outputs are
+//! dropped. A family's sub-tests are its own pass's, then the shared pass's.
+
+use crate::level::LevelPlan;
+use crate::sampling::{evaluate, Outputs, Probe, SeedBuilder, Tree};
+use crate::subtest::{Requirement, SubTest};
+use gartowen_core::{Claim, NodeGroup, Width};
+
+/// Settings shared by the law families.
+#[derive(Debug, Clone, Copy)]
+pub struct LawConfig {
+    /// Layout of the words the battery sends.
+    pub tree: Tree,
+    /// The claim being judged (or, when nothing is claimed, the law measured against: Owen).
+    pub claim: Claim,
+    /// The level's sizes (seeds, depths, columns).
+    pub plan: LevelPlan,
+}
+
+impl LawConfig {
+    /// The group node permutations are tested against: the claimed one, else S_b.
+    pub fn group(&self) -> NodeGroup {
+        self.claim.marginal.unwrap_or(NodeGroup::Symmetric)
+    }
+
+    /// Depths 0..=max_depth that have a full digit.
+    pub fn depths(&self) -> std::ops::RangeInclusive<u32> {
+        0..=self
+            .plan
+            .max_depth
+            .min(self.tree.full_digits().saturating_sub(1))
+    }
+}
+
+/// A family's own evaluation: instances of the candidate for seeds `seed_base + i`.
+pub struct OwnPass<'a, 'b> {
+    /// Instances per seed.
+    pub with_seed: &'a SeedBuilder<'b>,
+    /// The width words are scrambled at.
+    pub width: Width,
+    /// The run's first seed.
+    pub seed_base: u64,
+}
+
+impl OwnPass<'_, '_> {
+    /// Scrambles `probes` for seeds `seed_base + first + i`, i in `0..max(probe.seeds)`.
+    pub fn evaluate(&self, first: u64, probes: &[Probe]) -> Result<Outputs, String> {
+        evaluate(
+            self.with_seed,
+            self.width,
+            self.seed_base.wrapping_add(first),
+            probes,
+        )
+    }
+}
+
+/// One family of law sub-tests.
+pub trait LawFamily {
+    /// The check's name in reports (`node-law`, `pair-law`, …).
+    fn name(&self) -> &'static str;
+
+    /// What its sub-tests require of a claim to be judged (distinct requirements, in the order
+    /// they appear).
+    fn requires(&self) -> &'static [Requirement];
+
+    /// What it tests, in one line (for listings).
+    fn what(&self) -> &'static str;
+
+    /// Probes evaluated in the pass shared by every family.
+    fn shared_probes(&self, _cfg: &LawConfig) -> Vec<Probe> {
+        Vec::new()
+    }
+
+    /// Sub-tests from this family's shared-pass outputs: `outputs[seed][k]` answers probe k of
+    /// [`LawFamily::shared_probes`], for the seeds those probes asked for.
+    fn analyse_shared(&self, _cfg: &LawConfig, _outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
+        Vec::new()
+    }
+
+    /// Sub-tests from a pass of the family's own, run after the shared outputs are dropped.
+    fn own_pass(&self, _cfg: &LawConfig, _pass: &OwnPass) -> Result<Vec<SubTest>, String> {
+        Ok(Vec::new())
+    }
+}

@@ -1,0 +1,270 @@
+//! The structure checks, as one declared list ([`STRUCTURE_CHECKS`]): exact properties every
+//! scramble of the claimed kind has, whatever its randomness.
+//!
+//! * `inverse`: `unscramble(scramble(x)) = x` on seeded words of every supported width;
+//! * `injective` (implementations without an inverse, e.g. external programs): images stay in
+//!   range and distinct inputs of one dimension never collide;
+//! * `nested`: the inspector, exhaustive at 16 bits (probes at 32 bits where 16 is
+//!   unsupported);
+//! * `nets` ([`crate::nets`]): nets in the scrambler's base and every base it is nested in keep
+//!   their t-values;
+//! * `expect`: bit-exact agreement with a built-in twin (`--expect`), after the laws.
+//!
+//! Sizes come from the [`LevelPlan`].
+
+use crate::candidate::Candidate;
+use crate::level::LevelPlan;
+use crate::sampling::SeedBuilder;
+use crate::verdict::Outcome;
+use gartowen_core::{Scrambler, SplitMix64, Width};
+use gartowen_oracles::inspector::{inspect_exhaustive, inspect_probes_batched};
+
+/// When a structure check runs relative to the law families.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Stage {
+    /// Before the laws.
+    BeforeLaws,
+    /// After the laws (checks that compare with something else).
+    AfterLaws,
+}
+
+/// One structure check: its name, when it applies and runs, and what it does.
+#[derive(Clone, Copy)]
+pub struct StructureCheck {
+    /// The check's name in reports.
+    pub name: &'static str,
+    /// What it verifies, in words (for listings).
+    pub what: &'static str,
+    /// Whether it runs before or after the law families.
+    pub stage: Stage,
+    /// Whether it applies to a candidate.
+    pub applies: fn(&Candidate) -> bool,
+    /// Runs it at a level's sizes.
+    pub run: fn(&Candidate, &LevelPlan) -> Outcome,
+}
+
+/// Every structure check, in report order within its stage.
+pub const STRUCTURE_CHECKS: [StructureCheck; 5] = [
+    StructureCheck {
+        name: "inverse",
+        what: "unscramble(scramble(x)) = x on seeded words of every supported width",
+        stage: Stage::BeforeLaws,
+        applies: |c| c.invertible,
+        run: |c, plan| check_inverse(c.probe.as_ref(), plan),
+    },
+    StructureCheck {
+        name: "injective",
+        what: "no inverse to test: images in range, no two inputs of a dimension collide",
+        stage: Stage::BeforeLaws,
+        applies: |c| !c.invertible,
+        run: |c, plan| check_injective(c.probe.as_ref(), plan),
+    },
+    StructureCheck {
+        name: "nested",
+        what: "output digit k depends only on input digits 0..k; node maps bijective",
+        stage: Stage::BeforeLaws,
+        applies: |_| true,
+        run: |c, _| check_nested(c.probe.as_ref()),
+    },
+    StructureCheck {
+        name: "nets",
+        what: "nets in the scrambler's base and every base it is nested in keep their t-values",
+        stage: Stage::BeforeLaws,
+        applies: |_| true,
+        run: |c, plan| check_nets(c.probe.as_ref(), plan),
+    },
+    StructureCheck {
+        name: "expect",
+        what: "bit-exact agreement with the built-in twin named by --expect",
+        stage: Stage::AfterLaws,
+        applies: |c| c.twin.is_some(),
+        run: |c, plan| match &c.twin {
+            Some((name, twin)) => check_twin(c, name, twin.as_ref(), plan),
+            None => Outcome::skipped("no twin to compare with"),
+        },
+    },
+];
+
+/// Seed of the words `inverse` and `injective` draw.
+pub const INVERSE_SEED: u64 = 0x1234;
+/// Seed of the inspector's node probes.
+pub const PROBE_SEED: u64 = 1;
+/// Seed of the words `expect` compares.
+pub const TWIN_SEED: u64 = 0xE8EC7;
+
+/// Nodes the inspector probes when 16-bit words are unsupported.
+const NESTED_PROBES: u64 = 2000;
+
+fn supported_widths(s: &dyn Scrambler) -> Vec<Width> {
+    [Width::W32, Width::W64]
+        .into_iter()
+        .filter(|w| s.supports_width(*w))
+        .collect()
+}
+
+/// The width the battery scrambles at: 32 bits where supported, else 64.
+pub fn working_width(s: &dyn Scrambler) -> Width {
+    if s.supports_width(Width::W32) {
+        Width::W32
+    } else {
+        Width::W64
+    }
+}
+
+fn check_inverse(s: &dyn Scrambler, plan: &LevelPlan) -> Outcome {
+    let n = plan.inverse_words;
+    let mut rng = SplitMix64::new(INVERSE_SEED);
+    for width in supported_widths(s) {
+        for _ in 0..n {
+            let x = rng.next_u64() & width.mask();
+            let dim = rng.bounded(8);
+            let y = s.scramble(x, width, dim);
+            if width.check(y).is_err() || s.unscramble(y, width, dim) != x {
+                return Outcome::fail(format!(
+                    "{}-bit word {x:#x} (dim {dim}) -> {y:#x} does not invert",
+                    width.bits()
+                ));
+            }
+        }
+    }
+    Outcome::pass(format!("{n} words per supported width invert"))
+}
+
+fn check_injective(s: &dyn Scrambler, plan: &LevelPlan) -> Outcome {
+    let n = plan.injective_words;
+    let mut rng = SplitMix64::new(INVERSE_SEED);
+    for width in supported_widths(s) {
+        for dim in 0..4u32 {
+            let mut inputs: Vec<u64> = (0..n).map(|_| rng.next_u64() & width.mask()).collect();
+            inputs.sort_unstable();
+            inputs.dedup();
+            let mut outputs = inputs.clone();
+            s.scramble_batch(&mut outputs, width, dim);
+            let mut seen = std::collections::HashMap::with_capacity(inputs.len());
+            for (&x, &y) in inputs.iter().zip(&outputs) {
+                if width.check(y).is_err() {
+                    return Outcome::fail(format!(
+                        "{}-bit word {x:#x} (dim {dim}) -> {y:#x} is out of range",
+                        width.bits()
+                    ));
+                }
+                if let Some(other) = seen.insert(y, x) {
+                    return Outcome::fail(format!(
+                        "not injective: {other:#x} and {x:#x} (dim {dim}) both -> {y:#x}"
+                    ));
+                }
+            }
+        }
+    }
+    Outcome::pass(format!(
+        "{n} words per dimension map to distinct in-range words (no inverse to test)"
+    ))
+}
+
+fn check_nested(s: &dyn Scrambler) -> Outcome {
+    let base = s.base();
+    let w16 = Width::new(16).expect("16");
+    let report = if s.supports_width(w16) {
+        inspect_exhaustive(&|x| s.scramble(x, w16, 0), w16, base, 16)
+    } else {
+        let w = working_width(s);
+        inspect_probes_batched(
+            &|words: &mut [u64]| s.scramble_batch(words, w, 0),
+            w,
+            base,
+            w.bits(),
+            NESTED_PROBES,
+            PROBE_SEED,
+        )
+    };
+    match report.first_violation {
+        None => Outcome::pass(format!(
+            "nested in base {} ({} nodes)",
+            base.base(),
+            report.nodes_checked
+        )),
+        Some(v) => Outcome::fail(format!(
+            "{:?} at depth {}, prefix {:#x}: inputs {:#x}, {:#x} -> outputs {:#x}, {:#x}",
+            v.kind, v.depth, v.prefix, v.inputs[0], v.inputs[1], v.outputs[0], v.outputs[1]
+        )),
+    }
+}
+
+fn check_nets(s: &dyn Scrambler, plan: &LevelPlan) -> Outcome {
+    let width = working_width(s);
+    if !s.supports_width(width) {
+        return Outcome::skipped("neither 32- nor 64-bit words");
+    }
+    let (verdict, detail) = crate::nets::check_nets(s, width, plan.level);
+    Outcome {
+        verdict,
+        detail,
+        value: None,
+    }
+}
+
+/// Bit-exact agreement with the twin on seeds 0..4, dimensions 0..8 and the plan's words each
+/// (0, the largest word, and seeded random words).
+fn check_twin(c: &Candidate, twin_name: &str, twin: &SeedBuilder, plan: &LevelPlan) -> Outcome {
+    let words = plan.twin_words;
+    let width = working_width(c.probe.as_ref());
+    let mut rng = SplitMix64::new(TWIN_SEED);
+    let mut compared = 0u64;
+    for seed in 0..4u64 {
+        let (mine, theirs) = match (c.with_seed.as_ref()(seed), twin(seed)) {
+            (Ok(a), Ok(b)) => (a, b),
+            (Err(e), _) | (_, Err(e)) => {
+                return Outcome::fail(format!("cannot build seed {seed}: {e}"))
+            }
+        };
+        if !theirs.supports_width(width) {
+            return Outcome::fail(format!(
+                "{twin_name} does not support {}-bit words",
+                width.bits()
+            ));
+        }
+        for dim in 0..8u32 {
+            let xs: Vec<u64> = (0..words)
+                .map(|k| match k {
+                    0 => 0,
+                    1 => width.mask(),
+                    _ => rng.next_u64() & width.mask(),
+                })
+                .collect();
+            // One batch each: an external or Python implementation answers one request.
+            let (mut a, mut b) = (xs.clone(), xs.clone());
+            mine.scramble_batch(&mut a, width, dim);
+            theirs.scramble_batch(&mut b, width, dim);
+            if let Some(k) = (0..xs.len()).find(|&k| a[k] != b[k]) {
+                return Outcome::fail(format!(
+                    "seed {seed}, dim {dim}, word {:#x}: got {:#x}, {twin_name} gives {:#x}",
+                    xs[k], a[k], b[k]
+                ));
+            }
+            compared += xs.len() as u64;
+        }
+    }
+    Outcome::pass(format!(
+        "bit-exact with {twin_name} on {compared} {}-bit words (seeds 0..4, dims 0..8)",
+        width.bits()
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn checks_have_distinct_names_and_only_expect_follows_the_laws() {
+        let mut names: Vec<&str> = STRUCTURE_CHECKS.iter().map(|c| c.name).collect();
+        names.sort_unstable();
+        names.dedup();
+        assert_eq!(names.len(), STRUCTURE_CHECKS.len());
+        let after: Vec<&str> = STRUCTURE_CHECKS
+            .iter()
+            .filter(|c| c.stage == Stage::AfterLaws)
+            .map(|c| c.name)
+            .collect();
+        assert_eq!(after, ["expect"]);
+    }
+}

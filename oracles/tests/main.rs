@@ -1,0 +1,8 @@
+//! The integration tests of this package, one module per concern, built as one test binary
+//! (one link instead of one per file).
+
+mod definition;
+mod exact_laws;
+mod full_tree;
+mod golden;
+mod statistics;

@@ -1,0 +1,21 @@
+//! The integration tests of this package, one module per concern, built as one test binary
+//! (one link instead of one per file).
+
+mod art_golden;
+mod batch_paths;
+mod expected_discrepancy;
+mod external;
+mod extracted_differential;
+mod f32_exhaustive;
+mod house_check;
+mod joint_laws;
+mod non_dyadic;
+mod owen_variance;
+mod owned_check;
+mod prerequisites;
+mod randomization_quality;
+mod scrambled_nets;
+mod shared_requests;
+mod theorems;
+mod verify;
+mod word_sweep;
