@@ -231,6 +231,17 @@ impl Grammar {
         })
     }
 
+    /// This grammar with every child replaced by its parent (the `NeverDescends` mutant).
+    #[cfg(feature = "mutants")]
+    pub(crate) fn never_descending(&self) -> Grammar {
+        let b = 1usize << self.q;
+        let mut g = self.clone();
+        for (i, c) in g.children.iter_mut().enumerate() {
+            *c = (i / b) as u32;
+        }
+        g
+    }
+
     /// The grammar for (L, q) from a process-wide cache: grammars do not depend on seeds, so
     /// scramblers built for many seeds share one.
     pub fn shared(len: usize, q: u32) -> Result<std::sync::Arc<Grammar>, GrammarError> {

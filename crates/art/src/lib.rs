@@ -9,13 +9,17 @@ pub mod composed;
 mod dims;
 pub mod engine;
 pub mod grammar;
+#[cfg(feature = "mutants")]
+pub mod mutants;
 pub mod peers;
 pub mod record;
 pub mod registry;
 pub mod variants;
 
 pub use composed::QArtComposed;
-pub use engine::{ArtMutant, ArtOwen, BatchKernel, BATCH_TABLE_BYTES};
+pub use engine::{ArtOwen, BatchKernel, BATCH_TABLE_BYTES};
 pub use grammar::Grammar;
+#[cfg(feature = "mutants")]
+pub use mutants::{ArtMutant, TailUntranslated};
 pub use record::ArtRecord;
 pub use variants::ArtVariant;

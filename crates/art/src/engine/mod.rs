@@ -45,7 +45,7 @@ const LANES: usize = 8;
 #[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
 const GROUPS: usize = 6;
 
-use crate::dims::{dimension_key, root_symbol, DimKey};
+use crate::dims::{dimension_key, DimKey};
 use crate::record::ArtRecord;
 use crate::{ArtVariant, Grammar};
 use gartowen_core::{DigitLayout, Permutation, PowerOfTwoBase, Scrambler, Width};
@@ -64,27 +64,51 @@ struct Step {
 /// Number of dimensions whose root symbol and shifts are precomputed.
 const CACHED_ROOTS: u32 = 256;
 
-/// Deliberate defects, for showing that the verify battery catches broken ART implementations.
-/// [`ArtMutant::None`] is the real scrambler; the others are never registered.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum ArtMutant {
-    /// The correct scrambler.
-    #[default]
-    None,
-    /// The grammar never descends: child(s, d) = s, so every node at a depth has the root's
-    /// symbol and (for ψ = identity) the same permutation.
-    NeverDescends,
-    /// One code for every symbol: the translation depends on the depth only.
-    OneCodePerDepth,
-    /// Every dimension starts at one root with no dimension shifts: all dimensions coincide.
-    OneRoot,
-    /// The top bit of every code (field 0's most significant bit) stuck at 0.
-    StuckCodeBit,
-    /// The design before dimension shifts: hashed roots only, so dimensions can coincide.
-    RootOnlyDimensions,
-    /// The partial tail digit gets no translation (scalar paths only): the flipped tail rule
-    /// the extracted differential test must catch.
-    TailUntranslated,
+/// How a dimension's root symbol and shifts are derived from (seed, dimension, symbols): the
+/// real rule is [`dimension_key`]; deliberate defects (the `mutants` feature) substitute
+/// another.
+pub(crate) type DimensionRule = fn(u64, u32, u32) -> DimKey;
+
+/// The tables an ART-Owen scrambler is built from: grammar, codes, ψ and ψ^{-1} images, and the
+/// dimension rule. Everything else (step, batch and narrow tables, cached dimensions) is
+/// derived from them.
+pub(crate) struct ArtTables {
+    pub(crate) grammar: std::sync::Arc<Grammar>,
+    pub(crate) codes: Vec<u64>,
+    pub(crate) psi: Vec<u8>,
+    pub(crate) psi_inv: Vec<u8>,
+    pub(crate) dimension_rule: DimensionRule,
+}
+
+impl ArtTables {
+    /// The tables of `variant` with `symbols` symbols drawn from `seed`: the record's (64-bit
+    /// words) and the real dimension rule.
+    pub(crate) fn draw(
+        variant: ArtVariant,
+        symbols: usize,
+        seed: u64,
+    ) -> Result<Self, crate::grammar::GrammarError> {
+        let record = ArtRecord::draw(variant, symbols, seed, Width::W64)?;
+        let grammar = record.grammar().clone();
+        let b = 1usize << variant.q();
+        let mut codes = Vec::with_capacity(symbols);
+        let (mut psi, mut psi_inv) = (Vec::new(), Vec::new());
+        for s in 0..grammar.symbols() {
+            codes.push(record.code(s));
+            if let Some(p) = record.psi(s) {
+                psi.extend_from_slice(p.as_slice());
+                let inv = p.inverse();
+                psi_inv.extend_from_slice(&inv.as_slice()[..b]);
+            }
+        }
+        Ok(ArtTables {
+            grammar,
+            codes,
+            psi,
+            psi_inv,
+            dimension_rule: dimension_key,
+        })
+    }
 }
 
 /// An ART-Owen scrambler: grammar, per-symbol ψ and codes, and the seed that chose them.
@@ -123,7 +147,8 @@ pub struct ArtOwen {
     kernel: BatchKernel,
     /// Root symbols and shifts of dimensions 0..CACHED_ROOTS.
     dims: Vec<DimKey>,
-    mutant: ArtMutant,
+    /// How the other dimensions' keys are derived.
+    dimension_rule: DimensionRule,
 }
 
 impl ArtOwen {
@@ -134,38 +159,23 @@ impl ArtOwen {
         symbols: usize,
         seed: u64,
     ) -> Result<Self, crate::grammar::GrammarError> {
-        Self::with_mutant(variant, symbols, seed, ArtMutant::None)
+        Ok(Self::from_tables(
+            variant,
+            seed,
+            ArtTables::draw(variant, symbols, seed)?,
+        ))
     }
 
-    /// The scrambler with a deliberate defect (tests of the verify battery only).
-    pub fn with_mutant(
-        variant: ArtVariant,
-        symbols: usize,
-        seed: u64,
-        mutant: ArtMutant,
-    ) -> Result<Self, crate::grammar::GrammarError> {
-        // The record (64-bit words) is the table; everything else is derived from it.
-        let record = ArtRecord::draw(variant, symbols, seed, Width::W64)?;
-        let grammar = record.grammar().clone();
-        let b = 1usize << variant.q();
-        let mut codes = Vec::with_capacity(symbols);
-        let (mut psi, mut psi_inv) = (Vec::new(), Vec::new());
-        for s in 0..grammar.symbols() {
-            codes.push(record.code(s));
-            if let Some(p) = record.psi(s) {
-                psi.extend_from_slice(p.as_slice());
-                let inv = p.inverse();
-                psi_inv.extend_from_slice(&inv.as_slice()[..b]);
-            }
-        }
-        match mutant {
-            ArtMutant::OneCodePerDepth => {
-                let first = codes[0];
-                codes.iter_mut().for_each(|c| *c = first);
-            }
-            ArtMutant::StuckCodeBit => codes.iter_mut().for_each(|c| *c &= !(1u64 << 63)),
-            _ => {}
-        }
+    /// The scrambler built from `tables` (drawn from `seed`): derives the step, batch and
+    /// narrow tables and caches the first dimensions' keys.
+    pub(crate) fn from_tables(variant: ArtVariant, seed: u64, tables: ArtTables) -> Self {
+        let ArtTables {
+            grammar,
+            codes,
+            psi,
+            psi_inv,
+            dimension_rule,
+        } = tables;
         let mut art = ArtOwen {
             variant,
             seed,
@@ -183,7 +193,7 @@ impl ArtOwen {
             codes_top: Vec::new(),
             kernel: BatchKernel::detect(),
             dims: Vec::new(),
-            mutant,
+            dimension_rule,
         };
         art.dims = (0..CACHED_ROOTS).map(|d| art.hashed_dim(d)).collect();
         let steps = art.build_steps(art.step_digits);
@@ -218,7 +228,7 @@ impl ArtOwen {
                 "narrow table out of shape"
             );
         }
-        Ok(art)
+        art
     }
 
     /// The step table: for every symbol and every value v of `step_digits` input digits, the
@@ -311,24 +321,12 @@ impl ArtOwen {
     #[cold]
     #[inline(never)]
     fn hashed_dim(&self, dim: u32) -> DimKey {
-        let symbols = self.grammar.symbols();
-        match self.mutant {
-            ArtMutant::OneRoot => DimKey::default(),
-            ArtMutant::RootOnlyDimensions => DimKey {
-                root: root_symbol(self.seed, dim, symbols),
-                ..DimKey::default()
-            },
-            _ => dimension_key(self.seed, dim, symbols),
-        }
+        (self.dimension_rule)(self.seed, dim, self.grammar.symbols())
     }
 
     #[inline(always)]
     fn child(&self, s: u32, d: u32) -> u32 {
-        if self.mutant == ArtMutant::NeverDescends {
-            s
-        } else {
-            self.grammar.child(s, d)
-        }
+        self.grammar.child(s, d)
     }
 
     /// The forward scramble through the step table, in the relative frame G = F << q·k (digit
@@ -379,12 +377,7 @@ impl ArtOwen {
         let r = w - consumed;
         if r != 0 {
             g ^= self.codes[s as usize];
-            let t = if self.mutant == ArtMutant::TailUntranslated {
-                0
-            } else {
-                g >> (64 - r)
-            };
-            out = (out << r) | ((x & ((1 << r) - 1)) ^ t);
+            out = (out << r) | ((x & ((1 << r) - 1)) ^ (g >> (64 - r)));
         }
         out
     }
@@ -456,11 +449,7 @@ impl ArtOwen {
             f ^= self.codes[s as usize] >> (q * k);
             let d_in = layout.get(x, k);
             let full = layout.digit_bits(k) == q;
-            let fk = if !full && self.mutant == ArtMutant::TailUntranslated {
-                0
-            } else {
-                layout.get(f >> top, k)
-            };
+            let fk = layout.get(f >> top, k);
             let (original, mapped) = if inverse {
                 let t = d_in ^ fk;
                 let o = if full { self.psi_invert(s, t) } else { t };
@@ -557,29 +546,6 @@ impl Scrambler for ArtOwen {
 
     /// Interleaved chains through the step table (bit-identical to [`Scrambler::scramble`]).
     fn scramble_batch(&self, words: &mut [u64], width: Width, dim: u32) {
-        if self.mutant == ArtMutant::TailUntranslated {
-            // The mutant exists on the scalar paths only.
-            words
-                .iter_mut()
-                .for_each(|w| *w = self.run(*w, width, dim, false));
-            return;
-        }
         self.forward_batch(words, width, dim)
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_dimension_mutants_really_drop_the_shifts() {
-        let art = ArtOwen::new(ArtVariant::ArtOwen2, 44, 9).unwrap();
-        let old = ArtOwen::with_mutant(ArtVariant::ArtOwen2, 44, 9, ArtMutant::RootOnlyDimensions)
-            .unwrap();
-        assert_eq!(old.dim_key(300).output_shift, 0);
-        assert_eq!(old.dim_key(300).root, art.dim_key(300).root);
-        assert_eq!(art.dim_key(300), dimension_key(9, 300, 44));
-        assert_eq!(art.dim_key(3), dimension_key(9, 3, 44));
     }
 }
