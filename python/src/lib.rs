@@ -219,14 +219,12 @@ fn discrepancy(
     root: bool,
     pairs: Option<&str>,
 ) -> PyResult<String> {
-    let kind_value = Kind::parse(kind).ok_or_else(|| {
-        PyValueError::new_err(format!("unknown kind '{kind}'; use l2star, cd, wd or gl2"))
-    })?;
-    let choice = MethodChoice::parse(method).ok_or_else(|| {
-        PyValueError::new_err(format!(
-            "unknown method '{method}'; use auto, naive, compensated, exact or fast"
-        ))
-    })?;
+    let kind_value: Kind = kind
+        .parse()
+        .map_err(|e| PyValueError::new_err(format!("{e}")))?;
+    let choice: MethodChoice = method
+        .parse()
+        .map_err(|e| PyValueError::new_err(format!("{e}")))?;
     let all_pairs = match pairs {
         None => None,
         Some("first") => Some(false),
@@ -296,16 +294,9 @@ fn verify(
             )))
         }
     };
-    let level_value = match level {
-        "quick" => Level::Quick,
-        "full" => Level::Full,
-        "exhaustive" => Level::Exhaustive,
-        other => {
-            return Err(PyValueError::new_err(format!(
-                "unknown level '{other}'; use quick, full or exhaustive"
-            )))
-        }
-    };
+    let level_value: Level = level
+        .parse()
+        .map_err(|e| PyValueError::new_err(format!("{e}")))?;
     let claim_value =
         Claim::parse(claim).map_err(|e| PyValueError::new_err(format!("claims {claim}: {e}")))?;
     let registry = gartowen::registry();

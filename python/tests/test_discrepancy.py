@@ -88,8 +88,8 @@ def test_equals_the_cli(cli, tmp_path):
 @pytest.mark.parametrize(
     "args,exc,fragment",
     [
-        (dict(kind="star"), ValueError, "kind"),
-        (dict(method="quick"), ValueError, "method"),
+        (dict(kind="star"), ValueError, "unknown kind 'star'; use l2star, cd, wd or gl2"),
+        (dict(method="quick"), ValueError, "unknown method 'quick'; use auto, naive, compensated"),
         (dict(kind="cd", method="fast"), ValueError, "2-D L2-star"),
         (dict(pairs="some"), ValueError, "pairs"),
     ],

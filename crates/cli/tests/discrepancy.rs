@@ -102,6 +102,11 @@ fn bad_input_and_usage_exit_2() {
         assert_eq!(o.status.code(), Some(2), "{args:?}");
         assert!(!String::from_utf8_lossy(&o.stderr).contains("panicked"));
     }
+    // The message the library's vocabulary gives, the same in Python.
+    let o = gartowen(&["discrepancy", ok.to_str().unwrap(), "--kind", "md"]);
+    assert!(
+        String::from_utf8_lossy(&o.stderr).contains("unknown kind 'md'; use l2star, cd, wd or gl2")
+    );
 }
 
 /// High dimensions: c0 = (4/3)^d overflows f64 and 3^-d underflows. No panic (WD and GL2 once

@@ -79,25 +79,24 @@ impl MethodChoice {
     /// assert_eq!(MethodChoice::parse("quick"), None);
     /// ```
     pub fn parse(name: &str) -> Option<MethodChoice> {
-        Some(match name {
-            "auto" => MethodChoice::Auto,
-            "naive" => MethodChoice::Naive,
-            "compensated" => MethodChoice::Compensated,
-            "exact" => MethodChoice::Exact,
-            "fast" => MethodChoice::Fast,
-            _ => return None,
-        })
+        name.parse().ok()
     }
+
+    /// Every method, in the order of [`MethodChoice::NAMES`].
+    pub const ALL: [MethodChoice; 5] = [
+        MethodChoice::Auto,
+        MethodChoice::Naive,
+        MethodChoice::Compensated,
+        MethodChoice::Exact,
+        MethodChoice::Fast,
+    ];
+
+    /// The names of [`MethodChoice::ALL`].
+    pub const NAMES: [&'static str; 5] = ["auto", "naive", "compensated", "exact", "fast"];
 
     /// The lower-case name, as [`MethodChoice::parse`] reads it.
     pub fn name(self) -> &'static str {
-        match self {
-            MethodChoice::Auto => "auto",
-            MethodChoice::Naive => "naive",
-            MethodChoice::Compensated => "compensated",
-            MethodChoice::Exact => "exact",
-            MethodChoice::Fast => "fast",
-        }
+        MethodChoice::NAMES[self as usize]
     }
 }
 
@@ -157,4 +156,30 @@ pub fn compute(points: Points, kind: Kind, method: MethodChoice) -> Result<Discr
             }
         }
     })
+}
+
+impl std::str::FromStr for MethodChoice {
+    type Err = gartowen_core::UnknownName;
+
+    /// The method called `s`; the error names the choices.
+    fn from_str(s: &str) -> Result<MethodChoice, Self::Err> {
+        gartowen_core::names::parse_name("method", s, &MethodChoice::NAMES, &MethodChoice::ALL)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip_and_the_error_lists_every_method() {
+        for m in MethodChoice::ALL {
+            assert_eq!(m.name().parse::<MethodChoice>(), Ok(m));
+        }
+        assert_eq!(MethodChoice::Compensated.name(), "compensated");
+        assert_eq!(
+            "quick".parse::<MethodChoice>().unwrap_err().to_string(),
+            "unknown method 'quick'; use auto, naive, compensated, exact or fast"
+        );
+    }
 }

@@ -31,18 +31,16 @@ impl Kind {
 
     /// Command-line name.
     pub fn name(self) -> &'static str {
-        match self {
-            Kind::L2Star => "l2star",
-            Kind::Centered => "cd",
-            Kind::WrapAround => "wd",
-            Kind::GeneralizedL2 => "gl2",
-        }
+        Kind::NAMES[self as usize]
     }
 
     /// Parses a command-line name.
     pub fn parse(s: &str) -> Option<Kind> {
-        Kind::ALL.into_iter().find(|k| k.name() == s)
+        s.parse().ok()
     }
+
+    /// The command-line names of [`Kind::ALL`], in that order.
+    pub const NAMES: [&'static str; 4] = ["l2star", "cd", "wd", "gl2"];
 
     /// (c0 numerator base, c0 denominator base, sign): c0 = sign·(num/den)^d.
     pub fn c0(self) -> (u64, u64, i64) {
@@ -146,5 +144,31 @@ impl Kind {
             // (2·2^W − max)/2^W
             Kind::GeneralizedL2 => (small(2 * one - xx.max(yy)), w),
         }
+    }
+}
+
+impl std::str::FromStr for Kind {
+    type Err = gartowen_core::UnknownName;
+
+    /// The kind called `s` (`l2star`, `cd`, `wd`, `gl2`); the error names the choices.
+    fn from_str(s: &str) -> Result<Kind, Self::Err> {
+        gartowen_core::names::parse_name("kind", s, &Kind::NAMES, &Kind::ALL)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip_and_the_error_lists_every_kind() {
+        for k in Kind::ALL {
+            assert_eq!(k.name().parse::<Kind>(), Ok(k));
+        }
+        assert_eq!(Kind::WrapAround.name(), "wd");
+        assert_eq!(
+            "l3".parse::<Kind>().unwrap_err().to_string(),
+            "unknown kind 'l3'; use l2star, cd, wd or gl2"
+        );
     }
 }

@@ -22,16 +22,24 @@ impl Level {
 
     /// The level's name as the CLI spells it.
     pub fn name(self) -> &'static str {
-        match self {
-            Level::Quick => "quick",
-            Level::Full => "full",
-            Level::Exhaustive => "exhaustive",
-        }
+        Level::NAMES[self as usize]
     }
 
     /// The sizes of this level.
     pub fn plan(self) -> &'static LevelPlan {
         &LEVEL_PLANS[self as usize]
+    }
+
+    /// The names of [`Level::ALL`], in that order.
+    pub const NAMES: [&'static str; 3] = ["quick", "full", "exhaustive"];
+}
+
+impl std::str::FromStr for Level {
+    type Err = gartowen_core::UnknownName;
+
+    /// The level called `s` (`quick`, `full`, `exhaustive`); the error names the choices.
+    fn from_str(s: &str) -> Result<Level, Self::Err> {
+        gartowen_core::names::parse_name("level", s, &Level::NAMES, &Level::ALL)
     }
 }
 
@@ -191,10 +199,17 @@ mod tests {
     use super::*;
 
     #[test]
-    fn every_level_finds_its_own_plan() {
+    fn every_level_finds_its_own_plan_and_name() {
         for level in Level::ALL {
             assert_eq!(level.plan().level, level);
+            assert_eq!(level.name().parse::<Level>(), Ok(level));
         }
+        assert_eq!(Level::Full.name(), "full");
+        let e = "fast".parse::<Level>().unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "unknown level 'fast'; use quick, full or exhaustive"
+        );
     }
 
     #[test]

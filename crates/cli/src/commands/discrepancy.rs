@@ -84,12 +84,10 @@ fn method_choice(method: MethodArg) -> MethodChoice {
 
 /// Runs `discrepancy`.
 pub fn run(a: DiscrepancyArgs) -> Result<ExitCode, CliError> {
-    let kind = Kind::parse(&a.kind).ok_or_else(|| {
-        CliError::Usage(format!(
-            "unknown kind '{}'; use l2star, cd, wd or gl2",
-            a.kind
-        ))
-    })?;
+    let kind: Kind = a
+        .kind
+        .parse()
+        .map_err(|e| CliError::Usage(format!("{e}")))?;
     let set = read_points(&a.file, a.format)?;
     let (n, d) = (set.len(), set.dims());
     let words: Vec<u64> = (0..n).flat_map(|i| set.point(i)).collect();
