@@ -7,8 +7,9 @@ use gartowen_netcheck::counting::{
     implied_m, t_value_with_witness,
 };
 use gartowen_netcheck::snap::{snap_to_grid, SnapSummary};
-use gartowen_netcheck::NetReport;
-use gartowen_netcheck::{BoxFailure, CheckBase, PointSet, ProjectionSpec};
+use gartowen_netcheck::{
+    BoxFailure, CheckBase, NetReport, PointSet, ProjectionSpec, SequenceReport, ShapeHistogram,
+};
 use serde_json::{json, Value};
 use std::borrow::Cow;
 
@@ -27,16 +28,158 @@ pub struct NetQuery {
     pub histograms: bool,
 }
 
-/// The outcome: whether every verdict holds (true when only t-values were asked), the JSON
-/// result (one object, or a list with `projections`) and the text report.
+/// The outcome: whether every verdict holds (true when only t-values were asked), the result
+/// of each projection and the text report.
 #[derive(Debug, Clone, PartialEq)]
 pub struct NetOutcome {
     /// Every checked property holds.
     pub holds: bool,
-    /// The JSON result, as the `result` of `gartowen check --json`.
-    pub result: Value,
+    /// One result per projection checked (one for the whole set without `projections`).
+    pub results: Vec<ProjectionResult>,
+    /// Whether the query named projections (the JSON result is then a list).
+    pub per_projection: bool,
     /// The text `gartowen check` prints.
     pub text: String,
+}
+
+impl NetOutcome {
+    /// The JSON result, as the `result` of `gartowen check --json`: one object, or a list with
+    /// `projections`.
+    pub fn result_json(&self) -> Value {
+        if self.per_projection {
+            Value::Array(self.results.iter().map(ProjectionResult::to_json).collect())
+        } else {
+            self.results
+                .first()
+                .map_or(Value::Null, ProjectionResult::to_json)
+        }
+    }
+}
+
+/// What was found on one projection.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ProjectionResult {
+    /// A (t,m,s)-net verdict, with the per-shape histograms when asked for.
+    Net {
+        /// The dimensions checked.
+        projection: Vec<usize>,
+        /// The base.
+        b: u64,
+        /// The verdict and the first failing box.
+        report: NetReport,
+        /// Box-count histograms per shape (`histograms`).
+        histograms: Option<Vec<ShapeHistogram>>,
+    },
+    /// The t-value: a measurement, with the box that fails at t − 1 as its witness.
+    TValue {
+        /// The dimensions checked.
+        projection: Vec<usize>,
+        /// The base.
+        b: u64,
+        /// The least t.
+        t: u32,
+        /// N = b^m.
+        m: u32,
+        /// The number of dimensions.
+        s: usize,
+        /// The failed check at t − 1 (None at t = 0).
+        witness: Option<NetReport>,
+    },
+    /// A (t,s)-sequence verdict.
+    Sequence {
+        /// The dimensions checked.
+        projection: Vec<usize>,
+        /// The base.
+        b: u64,
+        /// The verdict and the first failing block and box.
+        report: SequenceReport,
+    },
+}
+
+impl ProjectionResult {
+    /// The dimensions checked.
+    pub fn projection(&self) -> &[usize] {
+        match self {
+            ProjectionResult::Net { projection, .. }
+            | ProjectionResult::TValue { projection, .. }
+            | ProjectionResult::Sequence { projection, .. } => projection,
+        }
+    }
+
+    /// The verdict: Some(holds) for net and sequence checks, None for a t-value.
+    pub fn holds(&self) -> Option<bool> {
+        match self {
+            ProjectionResult::Net { report, .. } => Some(report.holds),
+            ProjectionResult::Sequence { report, .. } => Some(report.holds),
+            ProjectionResult::TValue { .. } => None,
+        }
+    }
+
+    /// The failing property and its first failing box, in words (None when it holds or
+    /// nothing was judged).
+    pub fn failure(&self) -> Option<String> {
+        match self {
+            ProjectionResult::Net { report, b, .. } => report.first_failure.as_ref().map(|f| {
+                format!(
+                    "not a ({},{},{})-net in base {b}: {}",
+                    report.t,
+                    report.m,
+                    report.dims,
+                    describe_failure(f, *b)
+                )
+            }),
+            ProjectionResult::Sequence { report, b, .. } => {
+                report.first_failure.as_ref().map(|f| {
+                    format!(
+                        "not a ({},{})-sequence in base {b}: block {} of {b}^{} points, {}",
+                        report.t,
+                        report.dims,
+                        f.block,
+                        f.m,
+                        describe_failure(&f.failure, *b)
+                    )
+                })
+            }
+            ProjectionResult::TValue { .. } => None,
+        }
+    }
+
+    /// The JSON of this result, as `gartowen check --json` writes it.
+    pub fn to_json(&self) -> Value {
+        match self {
+            ProjectionResult::Net {
+                projection,
+                report,
+                histograms,
+                ..
+            } => {
+                let mut v = serde_json::to_value(report).expect("serializable");
+                v["projection"] = json!(projection);
+                if let Some(h) = histograms {
+                    v["histograms"] = serde_json::to_value(h).expect("serializable");
+                }
+                v
+            }
+            ProjectionResult::TValue {
+                projection,
+                b,
+                t,
+                m,
+                s,
+                witness,
+            } => json!({
+                "projection": projection, "t": t, "m": m, "s": s, "b": b,
+                "witness_at_t_minus_1": witness.as_ref().map(|w| serde_json::to_value(w).expect("json")),
+            }),
+            ProjectionResult::Sequence {
+                projection, report, ..
+            } => {
+                let mut v = serde_json::to_value(report).expect("serializable");
+                v["projection"] = json!(projection);
+                v
+            }
+        }
+    }
 }
 
 /// Progress of a long check: `start` before each projection with the number of units, then
@@ -139,7 +282,8 @@ pub fn snap_note(s: &SnapSummary, coordinates: usize) -> String {
 ///                                              3 << 30, 1 << 30]).unwrap();
 /// let base = CheckBase::new(2).unwrap();
 /// let out = check_points(&p, base, &NetQuery::default(), &Silent).unwrap();
-/// assert_eq!(out.result["t"], 0);
+/// assert_eq!(out.result_json()["t"], 0);
+/// assert_eq!(out.results[0].holds(), None, "a t-value is a measurement");
 /// ```
 pub fn check_points(
     points: &PointSet,
@@ -162,19 +306,15 @@ pub fn check_points(
         None => vec![(0..points.dims()).collect()],
         Some(list) => list.clone(),
     };
-    let (holds, mut results, text) = if q.sequence {
+    let (holds, results, text) = if q.sequence {
         sequences(q, base, points, &targets, progress)?
     } else {
         nets(q, base, points, &targets, progress)?
     };
-    let result = if projections.is_none() {
-        results.pop().expect("one result")
-    } else {
-        json!(results)
-    };
     Ok(NetOutcome {
         holds,
-        result,
+        results,
+        per_projection: projections.is_some(),
         text,
     })
 }
@@ -204,18 +344,39 @@ pub fn check_points_owned(
     let r =
         check_net_owned(points, base, m, t, &|k| progress.advance(k)).map_err(|e| e.to_string())?;
     progress.finish();
-    let (text, result) = net_verdict(&dims, &r, base.get());
+    let holds = r.holds;
+    let result = net_verdict(&dims, r, base.get());
     Ok(NetOutcome {
-        holds: r.holds,
-        result,
-        text,
+        holds,
+        text: net_text(&result),
+        results: vec![result],
+        per_projection: false,
     })
 }
 
-/// The text line(s) and JSON of one net verdict on projection `dims`.
-fn net_verdict(dims: &[usize], r: &NetReport, b: u64) -> (String, Value) {
+/// One net verdict on projection `dims`.
+fn net_verdict(dims: &[usize], report: NetReport, b: u64) -> ProjectionResult {
+    ProjectionResult::Net {
+        projection: dims.to_vec(),
+        b,
+        report,
+        histograms: None,
+    }
+}
+
+/// The text line(s) of a net verdict.
+fn net_text(result: &ProjectionResult) -> String {
+    let ProjectionResult::Net {
+        projection,
+        b,
+        report: r,
+        ..
+    } = result
+    else {
+        return String::new();
+    };
     let mut text = format!(
-        "dims {dims:?}: ({},{},{})-net in base {b}: {} ({} shapes checked)\n",
+        "dims {projection:?}: ({},{},{})-net in base {b}: {} ({} shapes checked)\n",
         r.t,
         r.m,
         r.dims,
@@ -223,14 +384,12 @@ fn net_verdict(dims: &[usize], r: &NetReport, b: u64) -> (String, Value) {
         r.shapes_checked
     );
     if let Some(f) = &r.first_failure {
-        text += &format!("  first failure: {}\n", describe_failure(f, b));
+        text += &format!("  first failure: {}\n", describe_failure(f, *b));
     }
-    let mut v = serde_json::to_value(r).expect("serializable");
-    v["projection"] = json!(dims);
-    (text, v)
+    text
 }
 
-type Parts = (bool, Vec<Value>, String);
+type Parts = (bool, Vec<ProjectionResult>, String);
 
 /// The set restricted to `dims`: the set itself when `dims` is all of it, in order.
 fn projected<'a>(points: &'a PointSet, dims: &[usize]) -> Result<Cow<'a, PointSet>, String> {
@@ -272,14 +431,14 @@ fn nets(
                     .map_err(err)?;
                 progress.finish();
                 holds &= r.holds;
-                let (line, mut v) = net_verdict(dims, &r, b);
-                text += &line;
+                let mut result = net_verdict(dims, r, b);
+                text += &net_text(&result);
                 if q.histograms {
-                    v["histograms"] =
-                        serde_json::to_value(histograms(set, base, m, t).map_err(err)?)
-                            .expect("json");
+                    if let ProjectionResult::Net { histograms: h, .. } = &mut result {
+                        *h = Some(histograms(set, base, m, t).map_err(err)?);
+                    }
                 }
-                results.push(v);
+                results.push(result);
             }
             None => {
                 let (t, witness) = t_value_with_witness(set, base, m).map_err(err)?;
@@ -295,10 +454,14 @@ fn nets(
                         describe_failure(f, b)
                     );
                 }
-                results.push(json!({
-                    "projection": dims, "t": t, "m": m, "s": set.dims(), "b": b,
-                    "witness_at_t_minus_1": witness.map(|w| serde_json::to_value(&w).expect("json")),
-                }));
+                results.push(ProjectionResult::TValue {
+                    projection: dims.clone(),
+                    b,
+                    t,
+                    m,
+                    s: set.dims(),
+                    witness,
+                });
             }
         }
     }
@@ -364,9 +527,11 @@ fn sequences(
                 describe_failure(&f.failure, b)
             );
         }
-        let mut v = serde_json::to_value(&r).expect("serializable");
-        v["projection"] = json!(dims);
-        results.push(v);
+        results.push(ProjectionResult::Sequence {
+            projection: dims.clone(),
+            b,
+            report: r,
+        });
     }
     Ok((holds, results, text))
 }

@@ -32,7 +32,7 @@ fn t_of(values: &[f64], dims: usize, b: u64, m: u32, snap: bool) -> u32 {
         (set, None)
     };
     let out = check_points(&set, base, &q, &Silent).unwrap();
-    out.result["t"].as_u64().unwrap() as u32
+    out.result_json()["t"].as_u64().unwrap() as u32
 }
 
 #[test]

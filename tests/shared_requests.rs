@@ -178,8 +178,8 @@ fn net_check_reports_t_values_verdicts_and_real_boxes() {
     let good = sobol_set(64, 2);
     let out = check_points(&good, base, &NetQuery::default(), &Silent).unwrap();
     assert!(out.holds);
-    assert_eq!(out.result["t"], 0);
-    assert_eq!(out.result["m"], 6);
+    assert_eq!(out.result_json()["t"], 0);
+    assert_eq!(out.result_json()["m"], 6);
     assert!(
         out.text.contains("t = 0 (m = 6, s = 2, base 2)"),
         "{}",
@@ -197,7 +197,7 @@ fn net_check_reports_t_values_verdicts_and_real_boxes() {
     };
     let out = check_points(&bad, base, &q, &rec).unwrap();
     assert!(!out.holds);
-    let f = &out.result["first_failure"];
+    let f = &out.result_json()["first_failure"];
     let shape: Vec<u32> = serde_json::from_value(f["shape"].clone()).unwrap();
     let index: Vec<u64> = serde_json::from_value(f["box_index"].clone()).unwrap();
     assert_eq!(
@@ -212,7 +212,7 @@ fn net_check_reports_t_values_verdicts_and_real_boxes() {
     // Without t, the t-value is positive and its witness is the failing box at t - 1.
     let out = check_points(&bad, base, &NetQuery::default(), &Silent).unwrap();
     assert!(out.holds, "a t-value alone is not a verdict");
-    assert!(out.result["t"].as_u64().unwrap() > 0);
+    assert!(out.result_json()["t"].as_u64().unwrap() > 0);
     assert!(out.text.contains("not a ("), "{}", out.text);
 }
 
@@ -225,9 +225,12 @@ fn net_check_projections_and_sequences() {
         ..NetQuery::default()
     };
     let out = check_points(&set, base, &q, &Silent).unwrap();
-    let list = out.result.as_array().unwrap();
+    let json = out.result_json();
+    let list = json.as_array().unwrap();
     assert_eq!(list.len(), 6);
-    for item in list {
+    assert_eq!(out.results.len(), 6);
+    for (item, typed) in list.iter().zip(&out.results) {
+        assert_eq!(item["projection"], serde_json::json!(typed.projection()));
         let dims: Vec<usize> = serde_json::from_value(item["projection"].clone()).unwrap();
         let direct = check_points(
             &set.project(&dims).unwrap(),
@@ -236,7 +239,7 @@ fn net_check_projections_and_sequences() {
             &Silent,
         )
         .unwrap();
-        assert_eq!(item["t"], direct.result["t"]);
+        assert_eq!(item["t"], direct.result_json()["t"]);
     }
     // The (t,s)-sequence check: the least t holding equals the verdict's threshold.
     let q = NetQuery {
@@ -244,8 +247,8 @@ fn net_check_projections_and_sequences() {
         ..NetQuery::default()
     };
     let out = check_points(&set, base, &q, &Silent).unwrap();
-    let t = out.result["t"].as_u64().unwrap() as u32;
-    assert_eq!(out.result["max_m"], 8);
+    let t = out.result_json()["t"].as_u64().unwrap() as u32;
+    assert_eq!(out.result_json()["max_m"], 8);
     let holds_at = |t: u32| {
         let q = NetQuery {
             sequence: true,
@@ -266,7 +269,7 @@ fn net_check_projections_and_sequences() {
         ..NetQuery::default()
     };
     let out = check_points(&set, base, &q, &Silent).unwrap();
-    assert!(out.result[0]["histograms"].is_array());
+    assert!(out.result_json()[0]["histograms"].is_array());
     // Bad projections and m are refused with their value named.
     let q = NetQuery {
         projections: Some("0,9".into()),

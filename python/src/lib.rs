@@ -203,7 +203,7 @@ fn check(
         }),
         vec![],
         vec![record],
-        outcome.result,
+        outcome.result_json(),
     );
     Ok((cert.to_json(), outcome.holds, outcome.text))
 }

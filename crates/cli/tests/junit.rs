@@ -120,6 +120,21 @@ fn check_and_inspect_write_junit() {
             ("dims [1,2]", true)
         ]
     );
+    // A failure names the projection, the property and its first failing box.
+    let xml = std::fs::read_to_string(&junit).unwrap();
+    let doc = roxmltree::Document::parse(&xml).unwrap();
+    let message = doc
+        .descendants()
+        .find(|n| n.has_tag_name("failure"))
+        .and_then(|f| f.attribute("message"))
+        .unwrap()
+        .to_string();
+    assert!(
+        message.starts_with("dims [0,2]: not a (0,10,2)-net in base 2: shape [")
+            && message.contains("the box")
+            && message.contains("every box must hold 1"),
+        "{message}"
+    );
     let junit = dir.path().join("i.xml");
     let o = gartowen(&[
         "inspect",

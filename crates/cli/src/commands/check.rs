@@ -9,7 +9,7 @@ use gartowen::net_check::{
 };
 use gartowen::netcheck::CheckBase;
 use indicatif::{ProgressBar, ProgressStyle};
-use serde_json::{json, Value};
+use serde_json::json;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -141,17 +141,14 @@ pub fn run(a: CheckArgs) -> Result<ExitCode, CliError> {
     } else {
         (read, None)
     };
-    let NetOutcome {
-        holds,
-        result,
-        text,
-    } = check_points_owned(points, base, &query, &BarProgress::default())
+    let outcome = check_points_owned(points, base, &query, &BarProgress::default())
         .map_err(CliError::Usage)?;
+    let holds = outcome.holds;
     if let Some(path) = &a.junit {
         crate::output::write_junit(
             path,
             "gartowen check",
-            &[junit_suite(&a.file.display().to_string(), &result)],
+            &[junit_suite(&a.file.display().to_string(), &outcome)],
         )?;
     }
     if a.json {
@@ -169,14 +166,14 @@ pub fn run(a: CheckArgs) -> Result<ExitCode, CliError> {
             }),
             vec![],
             vec![input],
-            result,
+            outcome.result_json(),
         );
         crate::outln!("{}", cert.to_json());
     } else {
         if let Some(s) = &snapped {
             crate::out!("{}", snap_note(s, coordinates));
         }
-        crate::out!("{text}");
+        crate::out!("{}", outcome.text);
     }
     Ok(if holds {
         ExitCode::SUCCESS
@@ -185,35 +182,30 @@ pub fn run(a: CheckArgs) -> Result<ExitCode, CliError> {
     })
 }
 
-/// A testcase per projection of a check result (one object, or a list for --projections): it
-/// fails where the net or sequence property does not hold; t-values alone are measurements.
-fn junit_suite(file: &str, result: &Value) -> gartowen::battery::junit::JunitSuite {
+/// A testcase per projection of a check result: it fails where the net or sequence property
+/// does not hold, naming the property and its first failing box; t-values alone are
+/// measurements.
+fn junit_suite(file: &str, outcome: &NetOutcome) -> gartowen::battery::junit::JunitSuite {
     use gartowen::battery::junit::{JunitCase, JunitSuite};
-    let items: Vec<&Value> = match result {
-        Value::Array(list) => list.iter().collect(),
-        one => vec![one],
-    };
     JunitSuite {
         name: file.to_string(),
         certificate: None,
-        cases: items
+        cases: outcome
+            .results
             .iter()
-            .map(|v| {
-                let dims = v
-                    .get("projection")
-                    .map_or("all".to_string(), |p| p.to_string());
-                let holds = v.get("holds").and_then(Value::as_bool);
+            .map(|r| {
+                let dims = json!(r.projection()).to_string();
                 JunitCase {
                     name: format!("dims {dims}"),
-                    failure: (holds == Some(false)).then(|| {
+                    failure: (r.holds() == Some(false)).then(|| {
+                        let why = r.failure().unwrap_or_else(|| "the property fails".into());
                         (
-                            format!("dims {dims}: the property fails"),
-                            v.get("first_failure")
-                                .map_or(String::new(), |f| f.to_string()),
+                            format!("dims {dims}: {why}"),
+                            r.to_json()["first_failure"].to_string(),
                         )
                     }),
                     skipped: false,
-                    output: v.to_string(),
+                    output: r.to_json().to_string(),
                     seconds: 0.0,
                 }
             })
