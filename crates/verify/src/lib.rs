@@ -23,8 +23,6 @@ pub mod collisions;
 pub mod dimensions;
 pub mod equivalence;
 pub mod expected;
-pub mod external;
-pub mod external_pool;
 pub mod family;
 pub mod flip_rank;
 pub mod judge;
@@ -37,7 +35,6 @@ pub mod nets;
 pub mod owen_equivalence;
 pub mod pair_law;
 pub mod pair_lemma;
-pub mod pipe_holders;
 pub mod sampling;
 pub mod stats;
 pub mod structure;
@@ -46,3 +43,6 @@ pub mod verdict;
 pub mod word_sweep;
 
 pub use gartowen_core::{Claim, NodeGroup};
+/// External programs speaking the scrambling protocol (the `gartowen-external` crate).
+pub use gartowen_external as external;
+pub use gartowen_external::pool as external_pool;

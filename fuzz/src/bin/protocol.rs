@@ -2,7 +2,7 @@
 //! a reply of any count and width. They must return an error, never panic or over-allocate.
 
 use gartowen_core::Width;
-use gartowen_verify::external::{decode_reply, decode_request, encode_request};
+use gartowen_external::{decode_reply, decode_request, encode_request};
 
 fn main() {
     afl::fuzz!(|data: &[u8]| {

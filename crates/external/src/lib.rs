@@ -32,11 +32,14 @@
 
 //!
 //! The parts: [`protocol`] (frames, bytes only), [`error`] (what went wrong, in words),
-//! [`process`] (the child, its process group and its pipes) and [`adapter`] (one seed's view
-//! as a [`gartowen_core::Scrambler`]).
+//! [`process`] (the child, its process group and its pipes; [`pipe_holders`] finds processes
+//! that still hold them), [`adapter`] (one seed's view as a [`gartowen_core::Scrambler`]) and
+//! [`pool`] (several processes serving parallel workers).
 
 pub mod adapter;
 pub mod error;
+pub mod pipe_holders;
+pub mod pool;
 pub mod process;
 pub mod protocol;
 

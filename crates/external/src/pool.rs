@@ -2,7 +2,7 @@
 //! (the every-word sweep runs one chunk per thread) keeps every instance busy: each batch goes
 //! to an idle instance, and waits for one when all are busy.
 
-use crate::external::{ExternalError, ExternalProcess, ExternalScrambler};
+use crate::{ExternalError, ExternalProcess, ExternalScrambler};
 use gartowen_core::{Claim, PowerOfTwoBase, Scrambler, Width};
 use std::sync::{Arc, Condvar, Mutex};
 

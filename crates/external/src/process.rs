@@ -1,7 +1,7 @@
 //! The child program: its command line, process group, pipes, timeouts and exit status.
 
-use super::error::ExternalError;
-use super::protocol::*;
+use crate::error::ExternalError;
+use crate::protocol::*;
 use gartowen_core::{PowerOfTwoBase, Width};
 use std::io::{Read, Write};
 use std::process::{Child, ChildStdin, Command, Stdio};

@@ -1,8 +1,8 @@
 //! One seed's view of an [`ExternalProcess`] as a [`Scrambler`].
 
-use super::error::ExternalError;
-use super::process::ExternalProcess;
-use super::protocol::MAX_BATCH;
+use crate::error::ExternalError;
+use crate::process::ExternalProcess;
+use crate::protocol::MAX_BATCH;
 use gartowen_core::{Claim, PowerOfTwoBase, Scrambler, Width};
 
 use std::sync::Arc;

@@ -1,6 +1,6 @@
 //! The protocol's frames as bytes: request encoding and decoding, reply checks (no I/O).
 
-use super::error::ExternalError;
+use crate::error::ExternalError;
 use gartowen_core::{PowerOfTwoBase, Width};
 
 /// Request magic, `GOWQ`.
