@@ -5,6 +5,7 @@ mod commands;
 mod error;
 mod input;
 mod output;
+mod paths;
 
 use clap::{Parser, Subcommand};
 use error::CliError;

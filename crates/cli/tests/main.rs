@@ -4,6 +4,7 @@
 mod adversarial;
 mod art;
 mod check;
+mod clobbering;
 mod discrepancy;
 mod generate;
 mod junit;

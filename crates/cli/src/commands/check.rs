@@ -110,6 +110,10 @@ impl Progress for BarProgress {
 
 /// Runs `check`.
 pub fn run(a: CheckArgs) -> Result<ExitCode, CliError> {
+    if let Some(junit) = &a.junit {
+        use crate::paths::{named, refuse_clobbering};
+        refuse_clobbering(&[named("FILE", &a.file)], &[named("--junit", junit)])?;
+    }
     if let Some(n) = a.threads {
         if n > MAX_THREADS {
             // Spawning 100,000 threads took 14 s before failing: refuse at once.

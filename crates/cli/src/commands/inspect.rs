@@ -158,6 +158,13 @@ fn builder<'a>(
 
 /// Runs `inspect`.
 pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
+    if let (Some(junit), Some(program)) = (
+        &a.junit,
+        a.external.as_deref().and_then(crate::paths::program_path),
+    ) {
+        use crate::paths::{named, refuse_clobbering};
+        refuse_clobbering(&[named("--external", &program)], &[named("--junit", junit)])?;
+    }
     let base = PowerOfTwoBase::from_base(a.base)?;
     let width = Width::new(a.width)?;
     let (with_seed, process) = builder(&a, base, width)?;

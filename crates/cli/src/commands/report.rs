@@ -60,6 +60,10 @@ fn cli_error(e: ReportError) -> CliError {
 
 /// Runs `report`.
 pub fn run(a: ReportArgs) -> Result<ExitCode, CliError> {
+    if let Some(b) = &a.baseline {
+        use crate::paths::{named, refuse_input_inside};
+        refuse_input_inside(named("--baseline", b), named("--out", &a.out))?;
+    }
     // Read the baseline first: a bad one is a usage error before minutes of work.
     let baseline = match &a.baseline {
         Some(p) => Some(read_baseline(p).map_err(cli_error)?),

@@ -86,6 +86,10 @@ pub struct SceneArgs {
 
 /// Runs `scene`.
 pub fn run(a: SceneArgs) -> Result<ExitCode, CliError> {
+    if let Some(b) = &a.baseline {
+        use crate::paths::{named, refuse_input_inside};
+        refuse_input_inside(named("--baseline", b), named("--out", &a.out))?;
+    }
     let baseline = match &a.baseline {
         Some(p) => Some(read_scene_baseline(p).map_err(CliError::Usage)?),
         None => None,

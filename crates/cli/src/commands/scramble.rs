@@ -49,6 +49,10 @@ pub struct ScrambleArgs {
 
 /// Runs `scramble`.
 pub fn run(a: ScrambleArgs) -> Result<ExitCode, CliError> {
+    if let Some(out) = &a.output {
+        use crate::paths::{named, refuse_clobbering};
+        refuse_clobbering(&[named("FILE", &a.file)], &[named("-o", out)])?;
+    }
     let format = a
         .format
         .or_else(|| a.output.as_deref().and_then(format_of))

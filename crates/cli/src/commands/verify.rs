@@ -17,6 +17,22 @@ fn equivalence_seeds(a: &VerifyArgs, level: Level) -> u64 {
         .unwrap_or_else(|| gartowen::battery::owen_equivalence::equivalence_seeds(level))
 }
 
+/// Refuses a `--json` or `--junit` path that is an input (a `--merge` file, the external
+/// program) or the other output.
+fn refuse_clobbering_any(a: &VerifyArgs) -> Result<(), CliError> {
+    use crate::paths::{named, program_path, refuse_clobbering};
+    let program = a.external.as_deref().and_then(program_path);
+    let mut inputs: Vec<_> = a.merge.iter().map(|p| named("--merge", p)).collect();
+    if let Some(p) = &program {
+        inputs.push(named("--external", p));
+    }
+    let outputs: Vec<_> = [("--json", &a.json), ("--junit", &a.junit)]
+        .into_iter()
+        .filter_map(|(flag, p)| p.as_deref().map(|p| named(flag, p)))
+        .collect();
+    refuse_clobbering(&inputs, &outputs)
+}
+
 /// `--list-checks`: the declared battery as text on standard output, or as JSON in `json`.
 fn list_checks(json: Option<&std::path::Path>) -> Result<ExitCode, CliError> {
     use gartowen::battery::listing::{listing, listing_text};
@@ -204,6 +220,7 @@ fn is_sweep_certificate(path: &PathBuf) -> bool {
 
 /// Runs `verify`.
 pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
+    refuse_clobbering_any(&a)?;
     if a.list_checks {
         return list_checks(a.json.as_deref());
     }
