@@ -93,6 +93,33 @@ pub struct GeneratePlan {
     pub scrambler: Box<dyn Scrambler>,
 }
 
+/// The scrambler `request` with `seed`, in base `scramble_base` when given (else `fallback`)
+/// unless the request fixes its own base. A given base that the scrambler does not scramble
+/// in (a fixed-base scrambler, or a `:base=B` option saying otherwise) is refused, naming
+/// both, rather than silently ignored.
+pub fn build_scrambler(
+    request: &str,
+    seed: u64,
+    scramble_base: Option<u64>,
+    fallback: PowerOfTwoBase,
+) -> Result<Box<dyn Scrambler>, RequestError> {
+    let default_base = match scramble_base {
+        Some(b) => PowerOfTwoBase::from_base(b)?,
+        None => fallback,
+    };
+    let ctx = BuildContext { seed, default_base };
+    let scrambler = crate::registry().build_with(request, &ctx)?;
+    if scramble_base.is_some() && request != "none" && scrambler.base() != default_base {
+        return Err(RequestError::Invalid(format!(
+            "--scramble-base {} conflicts with {}, which scrambles in base {}: drop one",
+            default_base.base(),
+            scrambler.name(),
+            scrambler.base().base()
+        )));
+    }
+    Ok(scrambler)
+}
+
 /// The word width for `bits` (32 or 64).
 pub fn width_from_bits(bits: u32) -> Result<Width, RequestError> {
     match bits {
@@ -143,15 +170,7 @@ impl GeneratePlan {
             PointCount::Exact(n) => n,
         };
         seq.check_range(r.start, count)?;
-        let default_base = match r.scramble_base {
-            Some(b) => PowerOfTwoBase::from_base(b)?,
-            None => kind.base(),
-        };
-        let ctx = BuildContext {
-            seed: r.seed,
-            default_base,
-        };
-        let scrambler = crate::registry().build_with(&r.scramble, &ctx)?;
+        let scrambler = build_scrambler(&r.scramble, r.seed, r.scramble_base, kind.base())?;
         if !scrambler.supports_width(width) {
             return Err(RequestError::Invalid(format!(
                 "scrambler {} does not support {}-bit words",

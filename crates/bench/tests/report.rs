@@ -2,7 +2,7 @@
 //! CLI's end-to-end test).
 
 use gartowen_bench::figures::{loglog_lines, panel_grid, Panel, Series};
-use gartowen_bench::report::{compare, markdown, Report};
+use gartowen_bench::report::{comparable_rows, compare, markdown, Report};
 
 use crate::common;
 use common::report;
@@ -24,6 +24,26 @@ fn identical_reports_do_not_regress_and_each_kind_of_regression_is_caught() {
     assert!(slower[0].what.contains("relative to lk-hash"));
     // A better run is not a regression.
     assert!(compare(&base, &report(-1.7, 5e-6, 1.0)).is_empty());
+}
+
+#[test]
+fn a_baseline_sharing_no_row_compares_nothing() {
+    let base = report(-1.5, 1e-5, 2.0);
+    let rows = base.methods.iter().map(|m| m.curves.len()).sum::<usize>() + base.speed.len();
+    assert!(rows > 0);
+    assert_eq!(comparable_rows(&base, &base), rows);
+    let mut other = base.clone();
+    other.methods.iter_mut().for_each(|m| m.label.push_str(" (renamed)"));
+    assert_eq!(comparable_rows(&other, &base), base.speed.len());
+    other.speed.iter_mut().for_each(|s| s.scrambler.push_str("-renamed"));
+    assert_eq!(comparable_rows(&other, &base), 0);
+    // Another integrand under the same label is not comparable either.
+    let mut integrands = base.clone();
+    integrands.speed.clear();
+    for m in &mut integrands.methods {
+        m.curves.iter_mut().for_each(|c| c.integrand.push('!'));
+    }
+    assert_eq!(comparable_rows(&integrands, &base), 0);
 }
 
 /// A report whose one speed row has these per-round ratios (median as its ratio).

@@ -51,6 +51,15 @@ impl FromStr for ProjectionSpec {
             let dims: Result<Vec<usize>, _> = part.split(',').map(|d| d.trim().parse()).collect();
             let dims =
                 dims.map_err(|_| bad("expected pairs, groups:G, blocks:G or lists like 0,1;2,3"))?;
+            // A repeated dimension would make a projection that is no point set of its own
+            // (every box of it is a box of the smaller one): refuse rather than judge it.
+            if let Some(d) = dims
+                .iter()
+                .enumerate()
+                .find_map(|(k, d)| dims[..k].contains(d).then_some(d))
+            {
+                return Err(bad(&format!("dimension {d} appears twice in '{part}'")));
+            }
             list.push(dims);
         }
         Ok(ProjectionSpec::List(list))
@@ -112,6 +121,21 @@ impl ProjectionSpec {
 #[cfg(test)]
 mod bound_tests {
     use super::*;
+
+    #[test]
+    fn a_projection_naming_a_dimension_twice_is_refused() {
+        let e = "0,0".parse::<ProjectionSpec>().unwrap_err().to_string();
+        assert!(e.contains("dimension 0 appears twice in '0,0'"), "{e}");
+        let e = "0,1;2,3,2"
+            .parse::<ProjectionSpec>()
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("dimension 2 appears twice"), "{e}");
+        assert!(
+            "0,1;1,0".parse::<ProjectionSpec>().is_ok(),
+            "distinct within each"
+        );
+    }
 
     #[test]
     fn expansions_are_counted_before_they_are_built() {

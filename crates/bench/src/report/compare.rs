@@ -15,6 +15,34 @@ pub struct Regression {
     pub rule: String,
 }
 
+/// How many (method, integrand) curves and scramblers' speeds `now` shares with `baseline`:
+/// the rows [`compare`] can judge. Zero means a baseline that compares nothing.
+pub fn comparable_rows(baseline: &Report, now: &Report) -> usize {
+    let curves = now
+        .methods
+        .iter()
+        .filter_map(|m| {
+            baseline
+                .methods
+                .iter()
+                .find(|o| o.label == m.label)
+                .map(|o| (m, o))
+        })
+        .map(|(m, o)| {
+            m.curves
+                .iter()
+                .filter(|c| o.curves.iter().any(|oc| oc.integrand == c.integrand))
+                .count()
+        })
+        .sum::<usize>();
+    let speeds = now
+        .speed
+        .iter()
+        .filter(|s| baseline.speed.iter().any(|o| o.scrambler == s.scrambler))
+        .count();
+    curves + speeds
+}
+
 /// Compares `now` with `baseline`: slopes, RMSE at the largest common N, and speed ratios.
 pub fn compare(baseline: &Report, now: &Report) -> Vec<Regression> {
     let t = &now.thresholds;

@@ -13,7 +13,7 @@ mod staging;
 
 pub use crate::staged::{staging_dir, write_staged};
 pub use build::{build_report, measure_quality, slope_rows};
-pub use compare::{compare, read_baseline, Regression};
+pub use compare::{comparable_rows, compare, read_baseline, Regression};
 pub use markdown::markdown;
 pub use plots::write_figures;
 pub use staging::write_report;

@@ -92,6 +92,15 @@ pub fn run(a: ReportArgs) -> Result<ExitCode, CliError> {
     )
     .map_err(cli_error)?;
     bar.finish_and_clear();
+    if let (Some(b), Some(path)) = (&baseline, &a.baseline) {
+        if gartowen_bench::report::comparable_rows(b, &report) == 0 {
+            return Err(CliError::Usage(format!(
+                "--baseline {}: no method, integrand or scrambler of it is in this run, so \
+                 nothing can be compared (a report of another --quick setting or version?)",
+                path.display()
+            )));
+        }
+    }
     let staging = gartowen_bench::report::staging_dir(&a.out);
     crate::cleanup::register(&staging);
     let written = write_report(&report, &registry, &a.out, baseline.as_ref());

@@ -68,14 +68,12 @@ pub fn run(a: ScrambleArgs) -> Result<ExitCode, CliError> {
             "--words applies to npy and csv; hex is always words".into(),
         ));
     }
-    let ctx = gartowen::core::BuildContext {
-        seed: a.seed,
-        default_base: match a.scramble_base {
-            Some(b) => gartowen::core::PowerOfTwoBase::from_base(b)?,
-            None => gartowen::core::PowerOfTwoBase::B2,
-        },
-    };
-    let scrambler = gartowen::registry().build_with(&a.scramble, &ctx)?;
+    let scrambler = gartowen::generate::build_scrambler(
+        &a.scramble,
+        a.seed,
+        a.scramble_base,
+        gartowen::core::PowerOfTwoBase::B2,
+    )?;
     let points = read_points(&a.file, a.input_format)?;
     let width = points.width();
     if !scrambler.supports_width(width) {
