@@ -77,7 +77,7 @@ pub struct GenerateRequest {
     /// Seed of the scrambler.
     pub seed: u64,
     /// Base for scramblers whose base is a parameter (default: the sequence's own); a
-    /// `:base=B` option of `scramble` takes precedence.
+    /// base that differs from the scrambler's own (fixed, or a `:base=B` option) is refused.
     pub scramble_base: Option<u64>,
 }
 

@@ -122,7 +122,8 @@ def generate(
             None for the plain sequence.
         seed: the scrambler's seed, an integer in [0, 2^64).
         base: scrambling base for scramblers whose base is a parameter (default: the
-            sequence's own); a ``:base=B`` option of ``scramble`` takes precedence.
+            sequence's own); a base the scrambler does not take (a fixed base, or its
+            ``:base=B`` option) raises ValueError.
         bits: word width W, 32 or 64.
         words: return words (uint32 for 32 bits, uint64 for 64) instead of float64 values.
         start: index of the first point.

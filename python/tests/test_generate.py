@@ -68,6 +68,7 @@ def test_start_and_scramble_base():
         (dict(seq="halton", dims=2, n=4), ValueError, "halton"),
         (dict(seq="sz16", dims=17, n=4), ValueError, "17"),
         (dict(seq="sobol", dims=2, n=0), ValueError, "at least 1"),
+        (dict(seq="sobol", dims=2, n=4, scramble="lk-hash", base=4), ValueError, "conflicts with lk-hash"),
         (dict(seq="sobol", dims=2, n=4, bits=16), ValueError, "32 or 64"),
         (dict(seq="sobol", dims=2, n=4, scramble="nope"), ValueError, "nope"),
         (dict(seq="sobol", dims=2, n=4, seed=-1), ValueError, "negative"),

@@ -33,9 +33,15 @@ fn a_baseline_sharing_no_row_compares_nothing() {
     assert!(rows > 0);
     assert_eq!(comparable_rows(&base, &base), rows);
     let mut other = base.clone();
-    other.methods.iter_mut().for_each(|m| m.label.push_str(" (renamed)"));
+    other
+        .methods
+        .iter_mut()
+        .for_each(|m| m.label.push_str(" (renamed)"));
     assert_eq!(comparable_rows(&other, &base), base.speed.len());
-    other.speed.iter_mut().for_each(|s| s.scrambler.push_str("-renamed"));
+    other
+        .speed
+        .iter_mut()
+        .for_each(|s| s.scrambler.push_str("-renamed"));
     assert_eq!(comparable_rows(&other, &base), 0);
     // Another integrand under the same label is not comparable either.
     let mut integrands = base.clone();

@@ -77,7 +77,8 @@ pub struct GenerateArgs {
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
     /// Scrambling base for scramblers whose base is a parameter (default: the sequence's own:
-    /// sobol 2, sz4 4, sz16 16). A `:base=B` option in --scramble takes precedence.
+    /// sobol 2, sz4 4, sz16 16). A base the scrambler does not take (a fixed base, or its
+    /// `:base=B` option) is refused.
     #[arg(long = "scramble-base")]
     pub scramble_base: Option<u64>,
     /// Output file (default: standard output). Written atomically.

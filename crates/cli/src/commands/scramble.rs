@@ -32,8 +32,8 @@ pub struct ScrambleArgs {
     /// Seed of the scrambler.
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
-    /// Scrambling base for scramblers whose base is a parameter (default 2). A `:base=B` option
-    /// in --scramble takes precedence.
+    /// Scrambling base for scramblers whose base is a parameter (default 2). A base the
+    /// scrambler does not take (a fixed base, or its `:base=B` option) is refused.
     #[arg(long = "scramble-base")]
     pub scramble_base: Option<u64>,
     /// Output format (default: by -o's extension, else the input's).
