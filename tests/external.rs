@@ -125,6 +125,7 @@ fn correct_example_passes_bit_exact_against_its_builtin_twin() {
             names,
             [
                 "injective",
+                "function",
                 "nested",
                 "nets",
                 "node-law",
@@ -165,16 +166,20 @@ fn broken_example_is_rejected_naming_the_failing_node() {
     let c = external_candidate(Arc::new(p), 0, Claim::OWEN, None);
     let r = check_candidate(&c, Level::Quick, 1);
     assert!(r.failed());
-    // A bijection of words, so injectivity holds; nestedness does not.
+    // A bijection of words and a function, so injectivity holds; nestedness does not.
     assert_eq!(r.checks[0].verdict, Verdict::Pass);
-    let nested = &r.checks[1];
+    assert_eq!(
+        (r.checks[1].check.as_str(), r.checks[1].verdict),
+        ("function", Verdict::Pass)
+    );
+    let nested = &r.checks[2];
     assert_eq!(nested.verdict, Verdict::Fail);
     assert!(
         nested.detail.starts_with("NotNested at depth") && nested.detail.contains("prefix"),
         "{}",
         nested.detail
     );
-    assert_eq!(r.checks[2].verdict, Verdict::Fail, "{}", r.checks[2].detail);
+    assert_eq!(r.checks[3].verdict, Verdict::Fail, "{}", r.checks[3].detail);
 }
 
 fn first_failure(command: &str, timeout_ms: u64) -> (ExternalError, u32) {

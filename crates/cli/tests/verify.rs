@@ -47,6 +47,7 @@ fn verify_named_implementations_writes_json_and_exits_0() {
         names,
         [
             "inverse",
+            "function",
             "nested",
             "nets",
             "node-law",
@@ -57,14 +58,14 @@ fn verify_named_implementations_writes_json_and_exits_0() {
             "dimensions"
         ]
     );
-    for check in imps[1]["checks"].as_array().unwrap().iter().skip(3) {
+    for check in imps[1]["checks"].as_array().unwrap().iter().skip(4) {
         assert_eq!(check["verdict"], "measured", "lk-hash claims no law");
     }
     assert_eq!(imps[0]["claim"], "marginal:symmetric");
-    assert_eq!(imps[0]["checks"][3]["verdict"], "pass");
-    assert_eq!(imps[0]["checks"][4]["verdict"], "measured");
+    assert_eq!(imps[0]["checks"][4]["verdict"], "pass");
+    assert_eq!(imps[0]["checks"][5]["verdict"], "measured");
     // Every law sub-test carries its p-value and power.
-    let sub = &imps[0]["checks"][3]["tests"][0];
+    let sub = &imps[0]["checks"][4]["tests"][0];
     assert!(sub["p_value"].is_number() && sub["power"].as_str().unwrap().len() > 10);
 
     // The declared listing names what the run reported, in the same order (the checks that
@@ -92,7 +93,7 @@ fn verify_named_implementations_writes_json_and_exits_0() {
     assert_eq!(declared, names);
     let quick = &list["levels"][0];
     assert_eq!(quick["level"], "quick");
-    let node_law = &imps[0]["checks"][3];
+    let node_law = &imps[0]["checks"][4];
     assert_eq!(
         node_law["tests"][0]["n"], quick["law_seeds"],
         "node-law draws the plan's seeds at quick"
@@ -679,4 +680,68 @@ fn equivalent_to_owen_is_a_check_with_its_seeds_margin_and_verdict() {
         assert_eq!(o.status.code(), Some(2), "{args:?}");
         assert!(!o.stderr.is_empty());
     }
+}
+
+/// A protocol program (Python) whose answer for a word is the word XOR its position in the
+/// request: nested word by word when asked one word at a time, but not a function.
+const POSITIONAL: &str = r#"
+import struct, sys
+inp, out = sys.stdin.buffer, sys.stdout.buffer
+while True:
+    head = inp.read(32)
+    if len(head) < 32:
+        break
+    _, _, width, _, _, n, _, _ = struct.unpack("<4sHHIIIIQ", head)
+    size = width // 8
+    data = inp.read(n * size)
+    fmt = "<%d%s" % (n, "I" if size == 4 else "Q")
+    words = struct.unpack(fmt, data)
+    mask = (1 << width) - 1
+    out.write(b"GOWR" + struct.pack("<I", n) + struct.pack(fmt, *[(w ^ k) & mask for k, w in enumerate(words)]))
+    out.flush()
+"#;
+
+#[test]
+fn a_program_whose_answer_depends_on_the_request_is_not_a_function() {
+    let dir = tempfile::tempdir().unwrap();
+    let script = dir.path().join("positional.py");
+    std::fs::write(&script, POSITIONAL).unwrap();
+    let command = format!("python3 {}", script.display());
+    let o = gartowen(&[
+        "verify",
+        "--external",
+        &command,
+        "--base",
+        "2",
+        "--claim",
+        "nested",
+    ]);
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(
+        o.status.code(),
+        Some(1),
+        "{text}{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(
+        text.contains("not a function") && text.contains("at another position"),
+        "{text}"
+    );
+    let o = gartowen(&[
+        "inspect",
+        "--external",
+        &command,
+        "--base",
+        "2",
+        "--width",
+        "32",
+    ]);
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(
+        o.status.code(),
+        Some(1),
+        "{text}{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(text.contains("FAIL function: not a function"), "{text}");
 }

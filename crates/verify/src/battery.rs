@@ -20,7 +20,7 @@ pub use crate::candidate::{
 pub use crate::judge::{judge_families, profile};
 pub use crate::level::{Level, LevelPlan};
 pub use crate::structure::{
-    Stage, StructureCheck, INVERSE_SEED, PROBE_SEED, STRUCTURE_CHECKS, TWIN_SEED,
+    Stage, StructureCheck, FUNCTION_SEED, INVERSE_SEED, PROBE_SEED, STRUCTURE_CHECKS, TWIN_SEED,
 };
 pub use crate::verdict::{CheckResult, ImplReport, Verdict};
 
@@ -97,10 +97,16 @@ pub fn merge(parts: Vec<Vec<ImplReport>>, total: usize) -> Result<Vec<ImplReport
 }
 
 /// Every fixed seed the battery uses: the main instance's seed, then the seeds of the inverse
-/// sample, the inspector's probes and the twin comparison. Law instances use seeds
+/// sample, the inspector's probes, the twin comparison and the `function` check's words. Law instances use seeds
 /// 0..[`LevelPlan::law_seeds`] (and fewer for flip-rank, collisions and dimensions).
 pub fn seeds_used(main_seed: u64) -> Vec<u64> {
-    vec![main_seed, INVERSE_SEED, PROBE_SEED, TWIN_SEED]
+    vec![
+        main_seed,
+        INVERSE_SEED,
+        PROBE_SEED,
+        TWIN_SEED,
+        FUNCTION_SEED,
+    ]
 }
 
 /// Runs a structure check, timed; a transport failure found afterwards turns it into a

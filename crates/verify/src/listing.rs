@@ -98,6 +98,7 @@ mod tests {
             [
                 "inverse",
                 "injective",
+                "function",
                 "nested",
                 "nets",
                 "node-law",

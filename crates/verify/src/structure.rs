@@ -4,6 +4,10 @@
 //! * `inverse`: `unscramble(scramble(x)) = x` on seeded words of every supported width;
 //! * `injective` (implementations without an inverse, e.g. external programs): images stay in
 //!   range and distinct inputs of one dimension never collide;
+//! * `function`: a scramble is a function of (word, dimension, seed): the same words give the
+//!   same outputs in a second request, in reverse order, one word per request, and from a
+//!   second instance of one seed. Every other check assumes it (an external program that
+//!   answers fresh random words would otherwise pass the laws);
 //! * `nested`: the inspector, exhaustive at 16 bits (probes at 32 bits where 16 is
 //!   unsupported);
 //! * `nets` ([`crate::nets`]): nets in the scrambler's base and every base it is nested in keep
@@ -44,7 +48,7 @@ pub struct StructureCheck {
 }
 
 /// Every structure check, in report order within its stage.
-pub const STRUCTURE_CHECKS: [StructureCheck; 5] = [
+pub const STRUCTURE_CHECKS: [StructureCheck; 6] = [
     StructureCheck {
         name: "inverse",
         what: "unscramble(scramble(x)) = x on seeded words of every supported width",
@@ -58,6 +62,13 @@ pub const STRUCTURE_CHECKS: [StructureCheck; 5] = [
         stage: Stage::BeforeLaws,
         applies: |c| !c.invertible,
         run: |c, plan| check_injective(c.probe.as_ref(), plan),
+    },
+    StructureCheck {
+        name: "function",
+        what: "the same word, dimension and seed always give the same output (requests, instances, positions)",
+        stage: Stage::BeforeLaws,
+        applies: |_| true,
+        run: check_function,
     },
     StructureCheck {
         name: "nested",
@@ -158,6 +169,70 @@ fn check_injective(s: &dyn Scrambler, plan: &LevelPlan) -> Outcome {
     }
     Outcome::pass(format!(
         "{n} words per dimension map to distinct in-range words (no inverse to test)"
+    ))
+}
+
+/// Words the `function` check sends per dimension (0, the largest word, and seeded words), in
+/// dimensions 0..FUNCTION_DIMS; the first FUNCTION_SINGLES also one word per request.
+const FUNCTION_WORDS: usize = 256;
+const FUNCTION_DIMS: u32 = 4;
+const FUNCTION_SINGLES: usize = 8;
+/// Seed of the `function` check's words.
+pub const FUNCTION_SEED: u64 = 0xF0_0C7;
+
+fn check_function(c: &Candidate, _plan: &LevelPlan) -> Outcome {
+    let probe = c.probe.as_ref();
+    let width = working_width(probe);
+    let mut rng = SplitMix64::new(FUNCTION_SEED);
+    let differs = |what: &str, dim: u32, x: u64, y: u64, z: u64| {
+        Outcome::fail(format!(
+            "not a function: word {x:#x} (dim {dim}) gave {y:#x}, then {z:#x} {what}"
+        ))
+    };
+    // Two fresh instances of seed 1 (seed 0's is the probe).
+    let (one, two) = match (c.with_seed.as_ref()(1), c.with_seed.as_ref()(1)) {
+        (Ok(a), Ok(b)) => (a, b),
+        (Err(e), _) | (_, Err(e)) => return Outcome::fail(format!("cannot build seed 1: {e}")),
+    };
+    for dim in 0..FUNCTION_DIMS {
+        let xs: Vec<u64> = (0..FUNCTION_WORDS)
+            .map(|k| match k {
+                0 => 0,
+                1 => width.mask(),
+                _ => rng.next_u64() & width.mask(),
+            })
+            .collect();
+        let batch = |s: &dyn Scrambler, words: &[u64]| {
+            let mut out = words.to_vec();
+            s.scramble_batch(&mut out, width, dim);
+            out
+        };
+        let first = batch(probe, &xs);
+        let again = batch(probe, &xs);
+        if let Some(k) = (0..xs.len()).find(|&k| first[k] != again[k]) {
+            return differs("in a second request", dim, xs[k], first[k], again[k]);
+        }
+        let reversed: Vec<u64> = xs.iter().rev().copied().collect();
+        let back = batch(probe, &reversed);
+        if let Some(k) = (0..xs.len()).find(|&k| first[k] != back[xs.len() - 1 - k]) {
+            let z = back[xs.len() - 1 - k];
+            return differs("at another position of a request", dim, xs[k], first[k], z);
+        }
+        for k in 0..FUNCTION_SINGLES {
+            let z = probe.scramble(xs[k], width, dim);
+            if z != first[k] {
+                return differs("alone in a request", dim, xs[k], first[k], z);
+            }
+        }
+        let (a, b) = (batch(one.as_ref(), &xs), batch(two.as_ref(), &xs));
+        if let Some(k) = (0..xs.len()).find(|&k| a[k] != b[k]) {
+            return differs("from a second instance of seed 1", dim, xs[k], a[k], b[k]);
+        }
+    }
+    Outcome::pass(format!(
+        "{FUNCTION_WORDS} {}-bit words in dims 0..{FUNCTION_DIMS}: equal outputs in a second request, \
+         in reverse order, alone, and from a second instance",
+        width.bits()
     ))
 }
 
@@ -266,5 +341,81 @@ mod tests {
             .map(|c| c.name)
             .collect();
         assert_eq!(after, ["expect"]);
+    }
+
+    /// A scrambler whose output depends on how often it was asked (a counter) or on a word's
+    /// position in its request: the `function` check must fail each.
+    struct Forgetful {
+        calls: std::sync::atomic::AtomicU64,
+        by_position: bool,
+    }
+
+    impl Scrambler for Forgetful {
+        fn name(&self) -> String {
+            "forgetful".into()
+        }
+        fn base(&self) -> gartowen_core::PowerOfTwoBase {
+            gartowen_core::PowerOfTwoBase::B2
+        }
+        fn claim(&self) -> gartowen_core::Claim {
+            gartowen_core::Claim::OWEN
+        }
+        fn scramble(&self, x: u64, width: Width, _dim: u32) -> u64 {
+            let n = self
+                .calls
+                .fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+            (x ^ if self.by_position { 0 } else { n }) & width.mask()
+        }
+        fn unscramble(&self, y: u64, _width: Width, _dim: u32) -> u64 {
+            y
+        }
+        fn scramble_batch(&self, words: &mut [u64], width: Width, dim: u32) {
+            for (k, w) in words.iter_mut().enumerate() {
+                *w = self.scramble(*w, width, dim) ^ if self.by_position { k as u64 } else { 0 };
+            }
+        }
+    }
+
+    fn candidate(by_position: bool) -> Candidate<'static> {
+        Candidate::from_builder(
+            "forgetful",
+            gartowen_core::Claim::OWEN,
+            Box::new(move |_| {
+                Ok(Box::new(Forgetful {
+                    calls: 0.into(),
+                    by_position,
+                }) as Box<dyn Scrambler>)
+            }),
+        )
+        .unwrap()
+    }
+
+    #[test]
+    fn a_scramble_that_is_not_a_function_fails_and_a_real_one_passes() {
+        let plan = crate::level::Level::Quick.plan();
+        let counter = check_function(&candidate(false), plan);
+        assert_eq!(counter.verdict, crate::verdict::Verdict::Fail);
+        assert!(
+            counter.detail.contains("in a second request"),
+            "{}",
+            counter.detail
+        );
+        let positional = check_function(&candidate(true), plan);
+        assert_eq!(positional.verdict, crate::verdict::Verdict::Fail);
+        assert!(
+            positional.detail.contains("another position"),
+            "{}",
+            positional.detail
+        );
+        let real = Candidate::from_builder(
+            "identity",
+            gartowen_core::Claim::NESTED,
+            Box::new(|_| Ok(Box::new(gartowen_core::Identity) as Box<dyn Scrambler>)),
+        )
+        .unwrap();
+        assert_eq!(
+            check_function(&real, plan).verdict,
+            crate::verdict::Verdict::Pass
+        );
     }
 }

@@ -176,6 +176,44 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
             a.width
         )));
     }
+    if process.is_some() {
+        // Every verdict below assumes a function of (word, dimension, seed): an external
+        // program is asked first (a position-dependent answer would look nested word by word).
+        let check = gartowen::verify::STRUCTURE_CHECKS
+            .iter()
+            .find(|c| c.name == "function")
+            .expect("the function check is declared");
+        let c = Candidate {
+            index: 0,
+            name: s.name(),
+            probe: with_seed(a.seed).map_err(CliError::Usage)?,
+            with_seed: Box::new(|seed| with_seed(seed)),
+            invertible: false,
+            health: Box::new(|| None),
+            twin: None,
+            claim: s.claim(),
+        };
+        let outcome = (check.run)(&c, Level::Quick.plan());
+        if let Some(e) = process.as_ref().and_then(|p| p.failure()) {
+            return Err(CliError::External(e.to_string()));
+        }
+        if outcome.verdict == gartowen::verify::Verdict::Fail {
+            if a.json {
+                crate::outln!(
+                    "{}",
+                    serde_json::to_string_pretty(&serde_json::json!({
+                        "tool": "gartowen", "version": env!("CARGO_PKG_VERSION"),
+                        "command": "inspect", "scrambler": s.name(),
+                        "function": { "verdict": "fail", "detail": outcome.detail },
+                    }))
+                    .expect("json")
+                );
+            } else {
+                crate::outln!("{}: FAIL function: {}", s.name(), outcome.detail);
+            }
+            return Ok(ExitCode::from(1));
+        }
+    }
     let depth = a.depth.unwrap_or(u32::MAX);
     let f = |x: u64| s.scramble(x, width, a.dim);
     let report = if a.width <= 16 {
