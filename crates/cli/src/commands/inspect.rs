@@ -187,7 +187,7 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
             index: 0,
             name: s.name(),
             probe: with_seed(a.seed).map_err(CliError::Usage)?,
-            with_seed: Box::new(|seed| with_seed(seed)),
+            with_seed: Box::new(&with_seed),
             invertible: false,
             health: Box::new(|| None),
             twin: None,
