@@ -187,7 +187,9 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
             index: 0,
             name: s.name(),
             probe: with_seed(a.seed).map_err(CliError::Usage)?,
-            with_seed: Box::new(&with_seed),
+            // A closure borrowing the builder for this block only (the laws below take it).
+            #[allow(clippy::redundant_closure)]
+            with_seed: Box::new(|seed| with_seed(seed)),
             invertible: false,
             health: Box::new(|| None),
             twin: None,
