@@ -73,7 +73,8 @@ fn plan_words_equal_the_sequence_scrambled_word_by_word() {
 fn plan_counts_and_scramble_base() {
     let plan = GeneratePlan::new(&request("sobol", 2, PointCount::Log2(5), "none")).unwrap();
     assert_eq!(plan.count, 32);
-    // The sequence's base is the default base of a base-parameter scrambler; the option wins.
+    // The sequence's base is the default base of a base-parameter scrambler; a given base the
+    // scrambler does not take (its own option, or a fixed base) is refused, naming both.
     let base_of = |seq: &str, scramble: &str, base: Option<u64>| {
         let mut r = request(seq, 2, PointCount::Exact(4), scramble);
         r.scramble_base = base;
@@ -82,7 +83,22 @@ fn plan_counts_and_scramble_base() {
     assert_eq!(base_of("sz16", "owen-oracle", None), PowerOfTwoBase::B16);
     assert_eq!(base_of("sobol", "owen-oracle", None), PowerOfTwoBase::B2);
     assert_eq!(base_of("sobol", "owen-oracle", Some(8)).base(), 8);
-    assert_eq!(base_of("sobol", "owen-oracle:base=4", Some(8)).base(), 4);
+    assert_eq!(base_of("sobol", "owen-oracle:base=4", None).base(), 4);
+    assert_eq!(base_of("sobol", "owen-oracle:base=4", Some(4)).base(), 4);
+    for (scramble, base) in [
+        ("owen-oracle:base=4", 8),
+        ("lk-hash", 4),
+        ("art-owen-m8", 16),
+    ] {
+        let mut r = request("sobol", 2, PointCount::Exact(4), scramble);
+        r.scramble_base = Some(base);
+        let e = GeneratePlan::new(&r).err().expect("a conflict").to_string();
+        assert!(
+            e.starts_with(&format!("--scramble-base {base} conflicts with "))
+                && e.contains("drop one"),
+            "{e}"
+        );
+    }
 }
 
 #[test]

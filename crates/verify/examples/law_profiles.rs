@@ -7,14 +7,7 @@ use gartowen_core::{Claim, Scrambler};
 use gartowen_verify::battery::{check_candidate, Candidate, Level};
 
 fn main() {
-    let mutants = [
-        ArtMutant::None,
-        ArtMutant::NeverDescends,
-        ArtMutant::OneCodePerDepth,
-        ArtMutant::OneRoot,
-        ArtMutant::StuckCodeBit,
-        ArtMutant::RootOnlyDimensions,
-    ];
+    let mutants = ArtMutant::ALL;
     for variant in [ArtVariant::ArtOwen2, ArtVariant::ArtOwen16P] {
         for mutant in mutants {
             let build = move |seed: u64| {
