@@ -15,3 +15,4 @@ mod scramble;
 mod stdout_errors;
 mod sweep;
 mod verify;
+mod verify_declared;
