@@ -247,8 +247,13 @@ def msrv_violations(root):
         return 1
     msrv = m.group(1)
     print(f"locked dependencies needing a newer Rust than rust-version {msrv}:")
+    # The host's dependencies only: those of other platforms (Windows consoles, wasm) are not
+    # downloaded by a Linux build, and CI may have no network.
+    host = subprocess.run(["rustc", "-vV"], capture_output=True, text=True)
+    triple = re.search(r"^host: (\S+)", host.stdout, re.M)
+    platform = ["--filter-platform", triple.group(1)] if triple else []
     meta = subprocess.run(
-        ["cargo", "metadata", "--format-version", "1", "--locked", "--offline"],
+        ["cargo", "metadata", "--format-version", "1", "--locked", "--offline"] + platform,
         cwd=root, capture_output=True, text=True,
     )
     if meta.returncode != 0:

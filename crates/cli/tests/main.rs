@@ -5,6 +5,7 @@ mod adversarial;
 mod art;
 mod check;
 mod clobbering;
+mod containment;
 mod discrepancy;
 mod generate;
 mod junit;

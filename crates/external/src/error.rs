@@ -38,6 +38,18 @@ pub enum ExternalError {
         /// Bytes the reply needed.
         expected: usize,
     },
+    /// The program did not take the whole request `batch` within the timeout (it stopped
+    /// reading its stdin, or was stopped); the program was killed.
+    WriteTimeout {
+        /// 1-based request number.
+        batch: u64,
+        /// The timeout.
+        seconds: f64,
+        /// Bytes of the request the program did take.
+        written: usize,
+        /// Bytes of the whole request.
+        total: usize,
+    },
     /// The reply is not a reply: wrong magic or wrong count.
     Garbage {
         /// 1-based request number.
@@ -64,7 +76,7 @@ impl fmt::Display for ExternalError {
             if s.trim().is_empty() {
                 String::new()
             } else {
-                format!("; its stderr ends: {}", s.trim())
+                format!("; its stderr ends: {}", printable(s.trim()))
             }
         };
         match self {
@@ -92,6 +104,15 @@ impl fmt::Display for ExternalError {
                 f,
                 "no complete reply to request {batch} within {seconds} s ({received} of {expected} bytes); the program was killed"
             ),
+            ExternalError::WriteTimeout {
+                batch,
+                seconds,
+                written,
+                total,
+            } => write!(
+                f,
+                "request {batch} not taken within {seconds} s (the program read {written} of its {total} bytes, then stopped reading); the program was killed"
+            ),
             ExternalError::Garbage { batch, detail } => {
                 write!(f, "garbage reply to request {batch}: {detail}")
             }
@@ -110,3 +131,37 @@ impl fmt::Display for ExternalError {
 }
 
 impl std::error::Error for ExternalError {}
+
+/// `text` with every control character but line feed and tab written as a `\u{..}` escape, so
+/// that a program's stderr cannot drive the user's terminal (colours, cursor moves, titles).
+pub fn printable(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        if c.is_control() && c != '\n' && c != '\t' {
+            out.push_str(&c.escape_unicode().to_string());
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn terminal_escapes_in_a_programs_stderr_are_written_out_not_sent() {
+        assert_eq!(
+            printable("\u{1b}[31mred\u{7}\r\nok\tdone"),
+            "\\u{1b}[31mred\\u{7}\\u{d}\nok\tdone"
+        );
+        let e = ExternalError::WriteFailed {
+            batch: 1,
+            reason: "broken pipe".into(),
+            stderr: "\u{1b}]0;owned\u{7}".into(),
+        };
+        assert!(!e.to_string().contains('\u{1b}'), "{e}");
+        assert!(e.to_string().contains("\\u{1b}]0;owned"), "{e}");
+    }
+}

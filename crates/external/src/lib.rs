@@ -37,6 +37,7 @@
 //! [`pool`] (several processes serving parallel workers).
 
 pub mod adapter;
+mod deadline_write;
 pub mod error;
 pub mod pipe_holders;
 pub mod pool;

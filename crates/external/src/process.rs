@@ -1,9 +1,10 @@
 //! The child program: its command line, process group, pipes, timeouts and exit status.
 
+use crate::deadline_write::{make_non_blocking, write_before, WriteStop};
 use crate::error::ExternalError;
 use crate::protocol::*;
 use gartowen_core::{PowerOfTwoBase, Width};
-use std::io::{Read, Write};
+use std::io::Read;
 use std::process::{Child, ChildStdin, Command, Stdio};
 use std::sync::mpsc::{self, Receiver, RecvTimeoutError};
 use std::sync::{Arc, Mutex};
@@ -179,6 +180,15 @@ impl ExternalProcess {
             .unwrap_or_else(|e| e.into_inner())
             .push((child.id(), pipes.clone()));
         let stdin = child.stdin.take();
+        if let Some(pipe) = &stdin {
+            if let Err(e) = make_non_blocking(pipe) {
+                kill_group(&mut child, &pipes);
+                return Err(ExternalError::Spawn {
+                    program: words[0].clone(),
+                    reason: format!("cannot make its stdin non-blocking: {e}"),
+                });
+            }
+        }
         let mut out = child.stdout.take().expect("piped stdout");
         let mut err = child.stderr.take().expect("piped stderr");
         // Reader threads turn blocking pipes into a channel the host can wait on with a
@@ -347,26 +357,37 @@ impl ExternalProcess {
     ) -> Result<usize, ExternalError> {
         s.batches += 1;
         let batch = s.batches;
-        let write = s
-            .stdin
-            .as_mut()
-            .expect("open until failure")
-            .write_all(frame)
-            .and_then(|_| s.stdin.as_mut().expect("open").flush());
         let need = 8 + count * self.width.bits() as usize / 8;
-        // A timeout past what Instant can represent waits "forever" instead of panicking.
+        // One deadline for the whole request, write and reply. A timeout past what Instant can
+        // represent waits "forever" instead of panicking.
         let now = Instant::now();
         let deadline = now
             .checked_add(self.timeout)
             .unwrap_or_else(|| now + Duration::from_secs(365 * 86_400));
-        if let Err(e) = write {
-            return Err(
-                self.exited_or(s, batch, need, |stderr| ExternalError::WriteFailed {
+        let Session { stdin, child, .. } = s;
+        let stdin = stdin.as_mut().expect("open until failure");
+        let write = write_before(stdin, frame, deadline, || {
+            matches!(child.try_wait(), Ok(Some(_)))
+        });
+        match write {
+            Ok(()) => {}
+            Err(WriteStop::Deadline { written }) => {
+                return Err(ExternalError::WriteTimeout {
                     batch,
-                    reason: e.to_string(),
-                    stderr,
-                }),
-            );
+                    seconds: self.timeout.as_secs_f64(),
+                    written,
+                    total: frame.len(),
+                })
+            }
+            Err(WriteStop::Io(e)) => {
+                return Err(
+                    self.exited_or(s, batch, need, |stderr| ExternalError::WriteFailed {
+                        batch,
+                        reason: e.to_string(),
+                        stderr,
+                    }),
+                )
+            }
         }
         // Set once the child is seen to have exited while its stdout stays open.
         let mut exited_at: Option<Instant> = None;
