@@ -12,7 +12,7 @@ pub use gartowen_verify as battery;
 
 use gartowen_core::Registry;
 
-pub use gartowen_verify::{certificate, external, external_pool, word_sweep};
+pub use gartowen_verify::{audit, certificate, external, external_pool, word_sweep};
 
 pub mod generate;
 pub mod net_check;

@@ -32,11 +32,22 @@ pub const MAX_INPUT_BYTES: u64 = 2 << 30;
 /// The file's bytes, refused (exit 2) past [`MAX_INPUT_BYTES`]: by its size when it is a
 /// regular file, before reading; by reading at most one byte more for streams.
 fn read_bounded(path: &Path) -> Result<Vec<u8>, CliError> {
+    read_limited(path, MAX_INPUT_BYTES)
+}
+
+/// The file's text, refused (exit 2) past `limit` bytes or when it is not UTF-8.
+pub fn read_text_bounded(path: &Path, limit: u64) -> Result<String, CliError> {
+    String::from_utf8(read_limited(path, limit)?).map_err(|_| bad(path, "is not UTF-8 text"))
+}
+
+/// The file's bytes, refused (exit 2) past `limit`: by its size when it is a regular file,
+/// before reading; by reading at most one byte more for streams.
+fn read_limited(path: &Path, limit: u64) -> Result<Vec<u8>, CliError> {
     use std::io::Read;
     let cannot = |e: std::io::Error| CliError::Io(format!("cannot read {}: {e}", path.display()));
     let too_big = || {
         CliError::Usage(format!(
-            "{}: larger than {MAX_INPUT_BYTES} bytes, the most gartowen reads",
+            "{}: larger than {limit} bytes, the most gartowen reads",
             path.display()
         ))
     };
@@ -48,14 +59,14 @@ fn read_bounded(path: &Path) -> Result<Vec<u8>, CliError> {
             path.display()
         )));
     }
-    if meta.is_file() && meta.len() > MAX_INPUT_BYTES {
+    if meta.is_file() && meta.len() > limit {
         return Err(too_big());
     }
     let mut bytes = Vec::new();
-    file.take(MAX_INPUT_BYTES + 1)
+    file.take(limit + 1)
         .read_to_end(&mut bytes)
         .map_err(cannot)?;
-    if bytes.len() as u64 > MAX_INPUT_BYTES {
+    if bytes.len() as u64 > limit {
         return Err(too_big());
     }
     Ok(bytes)

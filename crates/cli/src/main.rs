@@ -33,6 +33,7 @@ enum Command {
     Matrices(commands::matrices::MatricesArgs),
     List(commands::list::ListArgs),
     Report(commands::report::ReportArgs),
+    Certificate(commands::certificate::CertificateArgs),
     Scene(commands::scene::SceneArgs),
 }
 
@@ -49,6 +50,7 @@ fn main() -> ExitCode {
         Command::Matrices(a) => commands::matrices::run(a),
         Command::List(a) => commands::list::run(a),
         Command::Report(a) => commands::report::run(a),
+        Command::Certificate(a) => commands::certificate::run(a),
         Command::Scene(a) => commands::scene::run(a),
     };
     match result {

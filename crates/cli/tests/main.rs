@@ -3,6 +3,7 @@
 
 mod adversarial;
 mod art;
+mod certificates;
 mod check;
 mod clobbering;
 mod containment;

@@ -15,6 +15,7 @@ pub mod names;
 pub mod perm;
 pub mod registry;
 pub mod scrambler;
+pub mod sha256;
 pub mod width;
 
 pub use claim::{Claim, NodeGroup};

@@ -14,6 +14,7 @@
 //! | `seeds`          | every seed the command drew randomness from (empty if none)          |
 //! | `inputs`         | what was examined: files with a checksum, programs, registry entries |
 //! | `result`         | the command's own result object                                      |
+//! | `digest`         | `sha256:` and the SHA-256 of the canonical JSON of every other field |
 //!
 //! No timestamps or host names: the same inputs give byte-identical certificates, except for
 //! the wall-time fields inside `result`.
@@ -87,6 +88,9 @@ pub struct Certificate {
     pub result: Value,
 }
 
+/// The prefix of the `digest` field's value.
+pub const DIGEST_PREFIX: &str = "sha256:";
+
 /// Why a document is not a certificate this build can read.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum CertificateError {
@@ -96,6 +100,15 @@ pub enum CertificateError {
     WrongSchema(String),
     /// `schema_version` is not [`SCHEMA_VERSION`].
     UnsupportedVersion(u64),
+    /// The document has no `digest` field.
+    NoDigest,
+    /// The content does not match its `digest`: the file was edited after it was written.
+    DigestMismatch {
+        /// The digest the file carries.
+        recorded: String,
+        /// The digest of its content.
+        computed: String,
+    },
 }
 
 impl fmt::Display for CertificateError {
@@ -108,6 +121,14 @@ impl fmt::Display for CertificateError {
             CertificateError::UnsupportedVersion(v) => write!(
                 f,
                 "schema version {v} is not supported (this build reads {SCHEMA_VERSION})"
+            ),
+            CertificateError::NoDigest => write!(
+                f,
+                "digest: missing (every certificate this build writes carries one)"
+            ),
+            CertificateError::DigestMismatch { recorded, computed } => write!(
+                f,
+                "digest: the file says {recorded}, its content gives {computed}: it was edited after it was written"
             ),
         }
     }
@@ -139,9 +160,12 @@ impl Certificate {
         }
     }
 
-    /// Pretty JSON text.
+    /// Pretty JSON text, ending with the `digest` field (see [`content_digest`]).
     pub fn to_json(&self) -> String {
-        serde_json::to_string_pretty(self).expect("certificates serialize")
+        let body = serde_json::to_string_pretty(self).expect("certificates serialize");
+        let value = serde_json::to_value(self).expect("certificates serialize");
+        let open = body.strip_suffix('}').expect("a JSON object").trim_end();
+        format!("{open},\n  \"digest\": \"{}\"\n}}", content_digest(&value))
     }
 
     /// Parses a certificate, checking the schema name and version before the fields.
@@ -159,6 +183,75 @@ impl Certificate {
             None => return Err(CertificateError::Malformed("schema_version missing".into())),
         }
         serde_json::from_value(v).map_err(|e| CertificateError::Malformed(e.to_string()))
+    }
+}
+
+/// The digest of a certificate document: [`DIGEST_PREFIX`] and the SHA-256 (hex) of its
+/// canonical JSON (keys sorted, no whitespace, numbers and strings as serde_json writes them)
+/// without the `digest` field. It detects a file edited after it was written; anyone can
+/// compute it, so it is not a signature.
+pub fn content_digest(doc: &Value) -> String {
+    let mut text = String::new();
+    match doc {
+        Value::Object(map) => {
+            let mut content = map.clone();
+            content.remove("digest");
+            canonical(&Value::Object(content), &mut text);
+        }
+        other => canonical(other, &mut text),
+    }
+    format!(
+        "{DIGEST_PREFIX}{}",
+        gartowen_core::sha256::sha256_hex(text.as_bytes())
+    )
+}
+
+/// Checks that the certificate text carries a `digest` that matches its content.
+pub fn check_digest(text: &str) -> Result<(), CertificateError> {
+    let doc: Value =
+        serde_json::from_str(text).map_err(|e| CertificateError::Malformed(e.to_string()))?;
+    let recorded = doc
+        .get("digest")
+        .and_then(Value::as_str)
+        .ok_or(CertificateError::NoDigest)?;
+    let computed = content_digest(&doc);
+    if recorded != computed {
+        return Err(CertificateError::DigestMismatch {
+            recorded: recorded.into(),
+            computed,
+        });
+    }
+    Ok(())
+}
+
+/// Writes `v` as canonical JSON: object keys in byte order, no whitespace.
+fn canonical(v: &Value, out: &mut String) {
+    match v {
+        Value::Object(map) => {
+            let mut keys: Vec<&String> = map.keys().collect();
+            keys.sort();
+            out.push('{');
+            for (k, key) in keys.into_iter().enumerate() {
+                if k > 0 {
+                    out.push(',');
+                }
+                out.push_str(&Value::String(key.clone()).to_string());
+                out.push(':');
+                canonical(&map[key], out);
+            }
+            out.push('}');
+        }
+        Value::Array(items) => {
+            out.push('[');
+            for (k, item) in items.iter().enumerate() {
+                if k > 0 {
+                    out.push(',');
+                }
+                canonical(item, out);
+            }
+            out.push(']');
+        }
+        scalar => out.push_str(&scalar.to_string()),
     }
 }
 
@@ -235,6 +328,58 @@ mod tests {
             assert_eq!(back, c);
             assert_eq!(back.to_json(), text);
         }
+    }
+
+    #[test]
+    fn the_digest_detects_any_edit_and_ignores_layout() {
+        let text = sample().to_json();
+        assert_eq!(check_digest(&text), Ok(()));
+        // The same content, laid out differently (keys reordered, compact): still valid.
+        let doc: Value = serde_json::from_str(&text).unwrap();
+        let mut keys: Vec<(String, Value)> = doc.as_object().unwrap().clone().into_iter().collect();
+        keys.reverse();
+        let relaid = format!(
+            "{{{}}}",
+            keys.iter()
+                .map(|(k, v)| format!("{}:{}", Value::String(k.clone()), v))
+                .collect::<Vec<_>>()
+                .join(",")
+        );
+        assert_eq!(check_digest(&relaid), Ok(()));
+        // One edited value, one added field, one removed field: each detected.
+        let edits: [fn(&mut Value); 4] = [
+            |d| d["seeds"][1] = json!(8),
+            |d| d["result"]["extra"] = json!(true),
+            |d| {
+                d.as_object_mut().unwrap().remove("inputs");
+            },
+            |d| d["inputs"][0]["details"]["points"] = json!(4.0),
+        ];
+        for edit in edits {
+            let mut d = doc.clone();
+            edit(&mut d);
+            assert!(
+                matches!(
+                    check_digest(&d.to_string()),
+                    Err(CertificateError::DigestMismatch { .. })
+                ),
+                "{d}"
+            );
+        }
+        let mut d = doc.clone();
+        d.as_object_mut().unwrap().remove("digest");
+        assert_eq!(
+            check_digest(&d.to_string()),
+            Err(CertificateError::NoDigest)
+        );
+        // The digest is the SHA-256 of the canonical form: sorted keys, no whitespace.
+        assert_eq!(
+            content_digest(&json!({"b": [1, 2.5, "x"], "a": {"d": null, "c": false}})),
+            format!(
+                "sha256:{}",
+                gartowen_core::sha256::sha256_hex(br#"{"a":{"c":false,"d":null},"b":[1,2.5,"x"]}"#)
+            )
+        );
     }
 
     #[test]

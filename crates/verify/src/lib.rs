@@ -16,6 +16,7 @@
 //! [`stats`] holds the tests' distributions, [`external`] speaks to external programs, and
 //! [`certificate`] is the JSON envelope.
 
+pub mod audit;
 pub mod battery;
 pub mod candidate;
 pub mod certificate;

@@ -24,6 +24,11 @@ impl Requirement {
     }
 }
 
+/// A number that JSON may hold as `null` (serde_json's NaN).
+fn nan_if_null<'de, D: serde::Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
+    Ok(Option::<f64>::deserialize(d)?.unwrap_or(f64::NAN))
+}
+
 /// One statistical (or exact) test inside a check family.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SubTest {
@@ -33,9 +38,12 @@ pub struct SubTest {
     pub depth: Option<u32>,
     /// What claim it judges.
     pub requires: Requirement,
-    /// The statistic (χ², collision count, rank deficiency, violations).
+    /// The statistic (χ², collision count, rank deficiency, violations). NaN when nothing
+    /// was measured (a failed external program); JSON writes NaN as `null` and reads it back.
+    #[serde(deserialize_with = "nan_if_null")]
     pub statistic: f64,
-    /// The p-value under the claimed law (an upper bound for exact tests).
+    /// The p-value under the claimed law (an upper bound for exact tests); NaN as above.
+    #[serde(deserialize_with = "nan_if_null")]
     pub p_value: f64,
     /// Observations (seeds, nodes or pairs).
     pub n: u64,

@@ -1,5 +1,6 @@
 //! One module per subcommand.
 
+pub mod certificate;
 pub mod check;
 pub mod discrepancy;
 pub mod generate;

@@ -19,11 +19,20 @@ pub fn refuse(p: &Path, m: impl std::fmt::Display) -> CliError {
     CliError::Usage(format!("{}: {m}", p.display()))
 }
 
-/// Reads and parses the certificate at `p`.
-pub fn read_certificate(p: &Path) -> Result<Certificate, CliError> {
-    let text = std::fs::read_to_string(p)
-        .map_err(|e| CliError::Io(format!("cannot read {}: {e}", p.display())))?;
-    Certificate::parse(&text).map_err(|e| refuse(p, e))
+/// Reads and parses the certificate at `p`, with its text (for [`check_digest`]).
+pub fn read_certificate(p: &Path) -> Result<(Certificate, String), CliError> {
+    let text = crate::input::read_text_bounded(p, MAX_CERTIFICATE_BYTES)?;
+    let cert = Certificate::parse(&text).map_err(|e| refuse(p, e))?;
+    Ok((cert, text))
+}
+
+/// The largest certificate read (a full-level registry certificate is about 30 MB).
+pub const MAX_CERTIFICATE_BYTES: u64 = 1 << 30;
+
+/// Refuses a certificate whose content does not match its digest (an edit that kept every
+/// field consistent); run after the field checks, which name what was edited when they can.
+pub fn check_digest(p: &Path, text: &str) -> Result<(), CliError> {
+    gartowen::certificate::check_digest(text).map_err(|e| refuse(p, e))
 }
 
 impl ShardSet {

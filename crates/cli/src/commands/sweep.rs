@@ -440,12 +440,13 @@ fn print_verdict(v: &ImplementationVerdict) -> Result<(), CliError> {
 /// `verify --merge` of sweep shards: the shards 1..N of one sweep, each once, from the same tool
 /// version and parameters; every implementation, dimension and chunk covered exactly once.
 pub fn merge(paths: &[PathBuf], json: Option<&PathBuf>) -> Result<ExitCode, CliError> {
-    use super::shards::{read_certificate, refuse, ShardSet};
+    use super::shards::{check_digest, read_certificate, refuse, ShardSet};
     let mut set = ShardSet::default();
     let mut first: Option<(Certificate, SweepParameters)> = None;
     let mut records = Vec::new();
+    let mut texts = Vec::new();
     for p in paths {
-        let cert = read_certificate(p)?;
+        let (cert, text) = read_certificate(p)?;
         let params: SweepParameters = serde_json::from_value(cert.parameters["sweep"].clone())
             .map_err(|_| {
                 refuse(
@@ -463,6 +464,7 @@ pub fn merge(paths: &[PathBuf], json: Option<&PathBuf>) -> Result<ExitCode, CliE
         }
         let pieces: Vec<PieceRecord> = serde_json::from_value(cert.result["pieces"].clone())
             .map_err(|e| refuse(p, format!("bad pieces: {e}")))?;
+        texts.push((p, text));
         records.extend(pieces);
         if first.is_none() {
             first = Some((cert, params));
@@ -470,5 +472,11 @@ pub fn merge(paths: &[PathBuf], json: Option<&PathBuf>) -> Result<ExitCode, CliE
     }
     set.complete()?;
     let (cert, params) = first.expect("at least one file");
+    // The pieces' own checks first (they name what was edited), then the digests (edits that
+    // kept the pieces consistent).
+    verdicts(&params, &records)?;
+    for (p, text) in &texts {
+        check_digest(p, text)?;
+    }
     finish(json, &params, Shard::ALL, cert.inputs, records, None)
 }

@@ -69,15 +69,17 @@ const SHARED_PARAMETERS: [&str; 6] = [
 ];
 
 /// Reads shard certificates and merges them: the shards 1..N of one run, each exactly once,
-/// from the same tool version with the same parameters; anything else is refused with the
-/// file named.
+/// from the same tool version with the same parameters, each checked field by field with
+/// every law verdict recomputed from its statistics (`gartowen::audit`) and its digest
+/// matching; anything else is refused with the file and the field named.
 fn merged(paths: &[PathBuf]) -> Result<(Level, Vec<ImplReport>, Option<String>), CliError> {
-    use super::shards::{read_certificate, refuse, ShardSet};
+    use super::shards::{check_digest, read_certificate, refuse, ShardSet};
+    let registry = gartowen::registry();
     let mut set = ShardSet::default();
-    let mut first: Option<Certificate> = None;
+    let mut first: Option<(Certificate, Option<usize>)> = None;
     let mut parts = Vec::new();
     for p in paths {
-        let cert = read_certificate(p)?;
+        let (cert, text) = read_certificate(p)?;
         if cert.command != "verify" {
             return Err(refuse(
                 p,
@@ -90,8 +92,9 @@ fn merged(paths: &[PathBuf]) -> Result<(Level, Vec<ImplReport>, Option<String>),
                 "verifies an external program; only registry shards merge",
             ));
         }
-        if let Some(fp) = set.admit(p, &cert)? {
-            let f = first.as_ref().expect("admitted before");
+        let earlier = set.admit(p, &cert)?;
+        let run = gartowen::audit::audit_verify(&cert, &registry).map_err(|e| refuse(p, e))?;
+        if let (Some(fp), Some((f, judged))) = (earlier, &first) {
             for key in SHARED_PARAMETERS {
                 if f.parameters[key] != cert.parameters[key] {
                     return Err(refuse(
@@ -106,17 +109,29 @@ fn merged(paths: &[PathBuf]) -> Result<(Level, Vec<ImplReport>, Option<String>),
                     ));
                 }
             }
+            if let (Some(a), Some(b)) = (run.judged, judged) {
+                if a != *b {
+                    return Err(refuse(
+                        p,
+                        format!(
+                            "result.implementations: per-test levels imply {a} judged implementations, {b} in {}",
+                            fp.display()
+                        ),
+                    ));
+                }
+            }
         }
-        let reports: Vec<ImplReport> =
-            serde_json::from_value(cert.result["implementations"].clone())
-                .map_err(|e| refuse(p, format!("bad report: {e}")))?;
-        parts.push(reports);
-        if first.is_none() {
-            first = Some(cert);
+        check_digest(p, &text)?;
+        let judged = run.judged;
+        parts.push(run.reports);
+        match &mut first {
+            None => first = Some((cert, judged)),
+            Some((_, j)) if j.is_none() => *j = judged,
+            Some(_) => {}
         }
     }
     set.complete()?;
-    let f = first.expect("at least one file");
+    let (f, judged) = first.expect("at least one file");
     let fp = &paths[0];
     let level: Level = serde_json::from_value(f.parameters["level"].clone())
         .map_err(|e| refuse(fp, format!("bad level: {e}")))?;
@@ -124,6 +139,8 @@ fn merged(paths: &[PathBuf]) -> Result<(Level, Vec<ImplReport>, Option<String>),
         .as_u64()
         .ok_or_else(|| refuse(fp, "no implementations_total"))? as usize;
     let all = merge(parts, total).map_err(CliError::Usage)?;
+    gartowen::audit::audit_merged(&all, total, judged)
+        .map_err(|e| CliError::Usage(format!("the merged shards: {e}")))?;
     let claim = f.parameters["claim_override"].as_str().map(str::to_string);
     Ok((level, all, claim))
 }

@@ -1,0 +1,244 @@
+//! Certificates are checked, not trusted: `verify --merge` and `certificate check` recompute
+//! every verdict from the recorded statistics, check every field against the registry and the
+//! level, and refuse an edit that kept the fields consistent by the content digest. Each
+//! tampered certificate of issue 38 is refused with exit 2 naming the field.
+
+use serde_json::Value;
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn gartowen(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_gartowen"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+const IMPLEMENTATIONS: [&str; 3] = ["lk-hash", "digital-shift", "owen-oracle:base=4"];
+
+/// Writes shards 1/2 and 2/2 of a quick run into `dir`.
+fn shards(dir: &Path) -> (String, String) {
+    let path = |n: &str| dir.join(n).to_str().unwrap().to_string();
+    for (shard, file) in [("1/2", "a1.json"), ("2/2", "a2.json")] {
+        let mut args = vec!["verify", "--shard", shard];
+        for i in IMPLEMENTATIONS {
+            args.extend(["--impl", i]);
+        }
+        let out = path(file);
+        args.extend(["--json", &out]);
+        let o = gartowen(&args);
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+    }
+    (path("a1.json"), path("a2.json"))
+}
+
+fn implementation<'a>(doc: &'a mut Value, name: &str) -> &'a mut Value {
+    doc["result"]["implementations"]
+        .as_array_mut()
+        .unwrap()
+        .iter_mut()
+        .find(|i| i["name"].as_str().unwrap().starts_with(name))
+        .unwrap()
+}
+
+fn check<'a>(imp: &'a mut Value, name: &str) -> &'a mut Value {
+    imp["checks"]
+        .as_array_mut()
+        .unwrap()
+        .iter_mut()
+        .find(|c| c["check"] == name)
+        .unwrap()
+}
+
+type Edit = fn(&mut Value);
+
+/// (what, the edit, a fragment of the field the refusal must name).
+fn tamperings() -> Vec<(&'static str, Edit, &'static str)> {
+    vec![
+        (
+            "a claimed node-law with every p-value 0, sub-tests deviating, verdict pass",
+            |d| {
+                let c = check(implementation(d, "owen-oracle"), "node-law");
+                for t in c["tests"].as_array_mut().unwrap() {
+                    t["p_value"] = 0.0.into();
+                    t["deviates"] = true.into();
+                }
+            },
+            "checks[",
+        ),
+        (
+            "a structure check's verdict changed to measured",
+            |d| check(implementation(d, "lk-hash"), "inverse")["verdict"] = "measured".into(),
+            "checks[0].verdict",
+        ),
+        (
+            "a structure check's verdict changed to skipped",
+            |d| check(implementation(d, "lk-hash"), "nets")["verdict"] = "skipped".into(),
+            ".verdict",
+        ),
+        (
+            "a p-value of 2.5",
+            |d| {
+                check(implementation(d, "owen-oracle"), "pair-law")["tests"][0]["p_value"] =
+                    2.5.into()
+            },
+            ".tests[0].p_value",
+        ),
+        (
+            "a p-value of -1",
+            |d| check(implementation(d, "owen-oracle"), "pair-law")["p_value"] = (-1.0).into(),
+            ".p_value",
+        ),
+        (
+            "the claim weakened from owen to nested",
+            |d| {
+                let i = implementation(d, "owen-oracle");
+                i["claim"] = "nested".into();
+                i["claims_nested_uniform"] = false.into();
+            },
+            ".claim",
+        ),
+        (
+            "the base changed",
+            |d| implementation(d, "lk-hash")["base"] = 4.into(),
+            ".base",
+        ),
+        (
+            "an injected external failure",
+            |d| {
+                let c = check(implementation(d, "lk-hash"), "nested");
+                c["verdict"] = "fail".into();
+                c["detail"] = "external program failed: no reply".into();
+                d["verdict"] = "fail".into();
+            },
+            ".detail",
+        ),
+        (
+            "the level changed",
+            |d| d["parameters"]["level"] = "full".into(),
+            "parameters.",
+        ),
+        ("the seeds changed", |d| d["seeds"][1] = 99.into(), "seeds"),
+        (
+            "an implementation renamed",
+            |d| implementation(d, "lk-hash")["name"] = "lk-hash-2".into(),
+            ".name",
+        ),
+        (
+            "a name with control characters",
+            |d| implementation(d, "lk-hash")["name"] = "lk-hash\u{1b}[2J".into(),
+            ".name",
+        ),
+        (
+            "the overall verdict changed",
+            |d| d["verdict"] = "fail".into(),
+            "verdict",
+        ),
+        (
+            "a consistent edit (a structure check's words)",
+            |d| check(implementation(d, "lk-hash"), "nested")["detail"] = "trust me".into(),
+            "digest",
+        ),
+        (
+            "the digest removed",
+            |d| {
+                d.as_object_mut().unwrap().remove("digest");
+            },
+            "digest",
+        ),
+    ]
+}
+
+#[test]
+fn tampered_shards_are_refused_by_merge_and_by_certificate_check_naming_the_field() {
+    let dir = tempfile::tempdir().unwrap();
+    let (a1, a2) = shards(dir.path());
+    // The untouched shards merge, and every certificate involved checks out.
+    let merged = dir.path().join("merged.json");
+    let o = gartowen(&[
+        "verify",
+        "--merge",
+        &a1,
+        &a2,
+        "--json",
+        merged.to_str().unwrap(),
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let o = gartowen(&["certificate", "check", &a1, &a2, merged.to_str().unwrap()]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert_eq!(
+        String::from_utf8_lossy(&o.stdout)
+            .matches(": consistent")
+            .count(),
+        3
+    );
+    let original: Value = serde_json::from_str(&std::fs::read_to_string(&a1).unwrap()).unwrap();
+    let tampered = dir.path().join("tampered.json");
+    let tampered = tampered.to_str().unwrap();
+    for (what, edit, field) in tamperings() {
+        let mut doc = original.clone();
+        edit(&mut doc);
+        assert_ne!(doc, original, "{what}: the edit changed nothing");
+        std::fs::write(tampered, serde_json::to_string_pretty(&doc).unwrap()).unwrap();
+        for args in [
+            vec!["verify", "--merge", tampered, &a2],
+            vec!["certificate", "check", tampered],
+        ] {
+            let o = gartowen(&args);
+            let err = String::from_utf8_lossy(&o.stderr);
+            assert_eq!(o.status.code(), Some(2), "{what} ({}): {err}", args[0]);
+            assert!(
+                err.contains("tampered.json") && err.contains(field),
+                "{what} ({}): the refusal names the file and {field}: {err}",
+                args[0]
+            );
+        }
+    }
+}
+
+#[test]
+fn certificates_of_check_and_discrepancy_carry_a_digest_that_catches_edits() {
+    let dir = tempfile::tempdir().unwrap();
+    let points = dir.path().join("p.npy");
+    let points = points.to_str().unwrap();
+    let o = gartowen(&[
+        "generate", "--seq", "sobol", "--dims", "2", "--log2-n", "6", "-o", points,
+    ]);
+    assert!(o.status.success());
+    for command in [
+        vec!["check", points, "--base", "2", "--json"],
+        vec!["discrepancy", points, "--json"],
+    ] {
+        let o = gartowen(&command);
+        assert!(o.status.success());
+        let file = dir.path().join(format!("{}.json", command[0]));
+        std::fs::write(&file, &o.stdout).unwrap();
+        let file = file.to_str().unwrap();
+        assert_eq!(
+            gartowen(&["certificate", "check", file]).status.code(),
+            Some(0)
+        );
+        let text = String::from_utf8(o.stdout).unwrap();
+        let edited = text.replacen("\"points\": 64", "\"points\": 65", 1);
+        assert_ne!(edited, text);
+        std::fs::write(file, edited).unwrap();
+        let o = gartowen(&["certificate", "check", file]);
+        assert_eq!(o.status.code(), Some(2));
+        assert!(String::from_utf8_lossy(&o.stderr).contains("digest"));
+    }
+}
