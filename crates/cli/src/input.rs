@@ -29,20 +29,36 @@ pub fn file_record(path: &Path, points: &PointSet) -> gartowen::certificate::Inp
 /// stream such as /dev/zero would otherwise be read until memory runs out.
 pub const MAX_INPUT_BYTES: u64 = 2 << 30;
 
-/// The file's bytes, refused (exit 2) past [`MAX_INPUT_BYTES`]: by its size when it is a
-/// regular file, before reading; by reading at most one byte more for streams.
-fn read_bounded(path: &Path) -> Result<Vec<u8>, CliError> {
-    read_limited(path, MAX_INPUT_BYTES)
-}
-
 /// The file's text, refused (exit 2) past `limit` bytes or when it is not UTF-8.
 pub fn read_text_bounded(path: &Path, limit: u64) -> Result<String, CliError> {
-    String::from_utf8(read_limited(path, limit)?).map_err(|_| bad(path, "is not UTF-8 text"))
+    String::from_utf8(read_limited(path, limit, TEXT_PROBE, text_probe)?)
+        .map_err(|_| bad(path, "is not UTF-8 text"))
+}
+
+/// Bytes of a text input looked at before the rest is read.
+const TEXT_PROBE: usize = 4096;
+
+/// Refuses binary data where text is expected (a NUL byte), so that a stream such as
+/// /dev/zero is refused after a few bytes instead of after the whole read budget.
+fn text_probe(first: &[u8]) -> Result<(), String> {
+    match first.iter().position(|&b| b == 0) {
+        Some(at) => Err(format!(
+            "holds binary data (a NUL byte at offset {at}), not text"
+        )),
+        None => Ok(()),
+    }
 }
 
 /// The file's bytes, refused (exit 2) past `limit`: by its size when it is a regular file,
-/// before reading; by reading at most one byte more for streams.
-fn read_limited(path: &Path, limit: u64) -> Result<Vec<u8>, CliError> {
+/// before reading; by reading at most one byte more for streams. The first `probe` bytes go
+/// through `check` before the rest is read, so a stream of the wrong kind is refused early.
+/// The file is opened once (a FIFO cannot be read twice).
+fn read_limited(
+    path: &Path,
+    limit: u64,
+    probe: usize,
+    check: impl Fn(&[u8]) -> Result<(), String>,
+) -> Result<Vec<u8>, CliError> {
     use std::io::Read;
     let cannot = |e: std::io::Error| CliError::Io(format!("cannot read {}: {e}", path.display()));
     let too_big = || {
@@ -51,7 +67,7 @@ fn read_limited(path: &Path, limit: u64) -> Result<Vec<u8>, CliError> {
             path.display()
         ))
     };
-    let file = std::fs::File::open(path).map_err(cannot)?;
+    let mut file = std::fs::File::open(path).map_err(cannot)?;
     let meta = file.metadata().map_err(cannot)?;
     if meta.is_dir() {
         return Err(CliError::Usage(format!(
@@ -63,7 +79,12 @@ fn read_limited(path: &Path, limit: u64) -> Result<Vec<u8>, CliError> {
         return Err(too_big());
     }
     let mut bytes = Vec::new();
-    file.take(limit + 1)
+    (&mut file)
+        .take(probe as u64)
+        .read_to_end(&mut bytes)
+        .map_err(cannot)?;
+    check(&bytes).map_err(|e| bad(path, e))?;
+    file.take((limit + 1).saturating_sub(bytes.len() as u64))
         .read_to_end(&mut bytes)
         .map_err(cannot)?;
     if bytes.len() as u64 > limit {
@@ -123,7 +144,7 @@ pub fn read_points_typed(
     if format == InputFormat::Npy {
         return read_npy_file(path, floats);
     }
-    let bytes = read_bounded(path)?;
+    let bytes = read_limited(path, MAX_INPUT_BYTES, TEXT_PROBE, text_probe)?;
     match format {
         InputFormat::Npy => read_npy(path, &bytes, floats),
         InputFormat::Csv => read_csv(path, &bytes, floats).map(|p| (p, true)),
@@ -131,6 +152,9 @@ pub fn read_points_typed(
         InputFormat::Auto => unreachable!(),
     }
 }
+
+/// The first bytes of every .npy file.
+const NPY_MAGIC: &[u8] = b"\x93NUMPY";
 
 /// Deepest bracket nesting accepted in a .npy header (a plain header has 2: the dict and the
 /// shape tuple).
@@ -225,7 +249,17 @@ fn read_npy_file(path: &Path, floats: FloatWords) -> Result<(PointSet, bool), Cl
     let file = std::fs::File::open(path).map_err(cannot)?;
     let meta = file.metadata().map_err(cannot)?;
     if !meta.is_file() || meta.len() > MAX_INPUT_BYTES {
-        let bytes = read_bounded(path)?;
+        drop(file);
+        // A stream is refused at its first bytes unless they are the .npy magic.
+        let bytes = read_limited(path, MAX_INPUT_BYTES, NPY_MAGIC.len(), |first| {
+            if first == NPY_MAGIC {
+                Ok(())
+            } else {
+                Err(format!(
+                    "not a .npy file: it starts with {first:02x?}, not the magic \\x93NUMPY"
+                ))
+            }
+        })?;
         return read_npy(path, &bytes, floats);
     }
     let total = meta.len() as usize;
