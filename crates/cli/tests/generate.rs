@@ -410,3 +410,32 @@ fn npy_bytes_do_not_depend_on_threads_and_a_full_disk_stops_the_pipeline() {
     );
     assert!(!String::from_utf8_lossy(&o.stderr).is_empty());
 }
+
+/// At thousands of dimensions a block holds only a few dozen rows (the buffer stays a few MB;
+/// 16,384 rows of 21,201 dimensions once took 2.8 GB and aborted): rows that cross several
+/// blocks must be the rows of a run with three dimensions in one block, plain and scrambled,
+/// in both orders.
+#[test]
+fn rows_across_many_blocks_at_thousands_of_dimensions_equal_the_rows_of_one_block() {
+    let first3 = |text: &str| -> Vec<String> {
+        text.lines()
+            .map(|l| l.split(' ').take(3).collect::<Vec<_>>().join(" "))
+            .collect()
+    };
+    for extra in [
+        vec![],
+        vec!["--scramble", "owen-oracle", "--seed", "3"],
+        vec!["--order", "gray"],
+    ] {
+        let run = |dims: &str| {
+            let mut args = vec!["generate", "--seq", "sobol", "--dims", dims, "--n", "300"];
+            args.extend(&extra);
+            let o = gartowen(&args);
+            assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+            stdout(&o)
+        };
+        let wide = run("5000");
+        assert_eq!(wide.lines().count(), 300);
+        assert_eq!(first3(&wide), first3(&run("3")), "{extra:?}");
+    }
+}

@@ -112,8 +112,19 @@ fn plan(a: &GenerateArgs) -> Result<GeneratePlan, CliError> {
 /// Fills rows `first..first + buf.len() / dims` of a [`RowSource`] into `buf` (row-major).
 pub type BlockFiller<'a> = Box<dyn Fn(u64, &mut [u64]) + Sync + 'a>;
 
-/// Rows written per block: a few MB of words, enough for batch scrambling to pay.
-const BLOCK_ROWS: u64 = 1 << 14;
+/// Words per block (2 MiB of words): enough rows for batch scrambling to pay at a few
+/// dimensions, and a bounded buffer at thousands (a block of 16,384 rows of 21,201
+/// dimensions once needed 2.8 GB and aborted).
+const BLOCK_WORDS: usize = 1 << 18;
+/// The fewest rows in a block, whatever the dimension (64 rows of Sobol's 21,201 dimensions
+/// are 10.9 MB).
+const MIN_BLOCK_ROWS: usize = 64;
+
+/// Rows per block for points of `dims` coordinates: [`BLOCK_WORDS`] words, at least
+/// [`MIN_BLOCK_ROWS`] rows.
+fn block_rows(dims: usize) -> u64 {
+    (BLOCK_WORDS / dims.max(1)).max(MIN_BLOCK_ROWS) as u64
+}
 
 /// Rows of words to write: `block(first, buf)` fills points first.. (< count) of `dims` words.
 pub struct RowSource<'a> {
@@ -135,8 +146,9 @@ impl RowSource<'_> {
     ) -> Result<(), CliError> {
         let mut buf = Vec::new();
         let mut first = 0u64;
+        let block = block_rows(self.dims);
         while first < self.count {
-            let rows = BLOCK_ROWS.min(self.count - first) as usize;
+            let rows = block.min(self.count - first) as usize;
             buf.resize(rows * self.dims, 0);
             (self.block)(first, &mut buf);
             emit(&buf)?;
