@@ -139,3 +139,85 @@ fn values_outside_the_f64_range_are_reported_honestly() {
     let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert!(doc["result"]["rel_error_bound"].as_f64().unwrap() <= 1e-12);
 }
+
+/// Writes `n` scrambled Sobol points in `dims` dimensions (float64 .npy) into `dir`.
+fn points(dir: &std::path::Path, n: u64, dims: u32) -> String {
+    let f = dir.join(format!("p{n}x{dims}.npy"));
+    let f = f.to_str().unwrap().to_string();
+    let (n, dims) = (n.to_string(), dims.to_string());
+    let o = gartowen(&[
+        "generate",
+        "--seq",
+        "sobol",
+        "--dims",
+        &dims,
+        "--n",
+        &n,
+        "--scramble",
+        "owen-oracle",
+        "--seed",
+        "1",
+        "-o",
+        &f,
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    f
+}
+
+/// Long jobs are estimated before they start: past --max-seconds they are refused (exit 2,
+/// naming the estimate and the flag), and the estimate scales with N² × d.
+#[test]
+fn a_job_past_max_seconds_is_refused_before_it_starts() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = points(dir.path(), 65_536, 16);
+    // About 25 minutes exactly: refused at the default limit, at once.
+    let started = std::time::Instant::now();
+    let o = gartowen(&["discrepancy", &f, "--method", "exact"]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("estimated")
+            && err.contains("--max-seconds 600")
+            && err.contains("compensated"),
+        "{err}"
+    );
+    assert!(started.elapsed().as_secs() < 30);
+    // A tight limit refuses even the compensated pass; a bad limit is named.
+    let o = gartowen(&[
+        "discrepancy",
+        &f,
+        "--method",
+        "compensated",
+        "--max-seconds",
+        "0.5",
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--max-seconds 0.5"));
+    for bad in ["--max-seconds=0", "--max-seconds=-3", "--max-seconds=NaN"] {
+        let o = gartowen(&["discrepancy", &f, bad]);
+        assert_eq!(o.status.code(), Some(2), "{bad}");
+        assert!(String::from_utf8_lossy(&o.stderr).contains("--max-seconds"));
+    }
+}
+
+/// `auto` on float64 points in 6 dimensions: the compensated bound is above 1e-12 there, and
+/// the exact method would take about half a minute, so auto keeps the compensated value and
+/// reports its proven bound (it once took the exact path: 953 s at 2^16 points).
+#[test]
+fn auto_keeps_the_compensated_value_with_its_bound_when_exact_would_take_long() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = points(dir.path(), 16_384, 6);
+    let o = gartowen(&["discrepancy", &f, "--json"]);
+    let r = &json(&o)["result"];
+    assert_eq!(r["method"], "compensated", "{r}");
+    let bound = r["rel_error_bound"].as_f64().unwrap();
+    assert!(bound > 1e-12 && bound < 1e-6, "{bound}");
+    // A small set of the same kind still gets the exact value.
+    let f = points(dir.path(), 1024, 6);
+    let o = gartowen(&["discrepancy", &f, "--json"]);
+    let r = &json(&o)["result"];
+    assert!(
+        r["method"] == "exact" || r["rel_error_bound"].as_f64().unwrap() <= 1e-12,
+        "{r}"
+    );
+}

@@ -1,7 +1,7 @@
 //! Which method computes a value: the `--method` of `gartowen discrepancy` and the `method=`
 //! of the Python package, one definition for both.
 
-use crate::{compensated, exact, fast2d, naive, Discrepancy, Kind, Points};
+use crate::{compensated, exact, fast2d, naive, Discrepancy, Kind, Method, Points};
 
 /// The relative error bound `auto` must prove before it returns a compensated value.
 pub const AUTO_REL_ERROR: f64 = 1e-12;
@@ -38,6 +38,80 @@ pub fn exact_cost(points: Points) -> (u64, u64) {
     (bits, pairs.saturating_mul(per_pair))
 }
 
+/// How long `auto` lets the exact method take (estimated by [`estimated_seconds`]) when the
+/// compensated bound is above [`AUTO_REL_ERROR`]; past it `auto` returns the compensated value
+/// with its proven (looser) bound instead of running for minutes.
+pub const AUTO_EXACT_SECONDS: f64 = 10.0;
+
+/// Pair-factor operations (point pairs × dimensions) per second of each pair-sum method on
+/// the 2-core reference machine, rounded down from 16,384 × 6 points (l2star and cd; see
+/// record/2026-12-03-hardening.md): naive 2.3e8, compensated 1.6e9, exact 2.8e7.
+const PAIR_FACTORS_PER_SECOND: [(Method, f64); 3] = [
+    (Method::Naive, 2e8),
+    (Method::Compensated, 1e9),
+    (Method::Exact, 2.5e7),
+];
+
+/// The estimated wall time of `method` on `points`, in seconds on the 2-core reference
+/// machine: N(N+1)/2 pairs × d factors at the method's measured rate (the O(N log N) fast
+/// method: N log2 N at 1e8 per second). An estimate to refuse or announce long jobs by, not a
+/// promise.
+///
+/// ```
+/// use gartowen_core::Width;
+/// use gartowen_discrepancy::{choice::estimated_seconds, Method, Points};
+/// let words = vec![0u64; 65_536 * 6];
+/// let p = Points { words: &words, dims: 6, width: Width::W64 };
+/// // The exact method on 2^16 points in 6 dimensions: minutes, not seconds.
+/// assert!(estimated_seconds(p, Method::Exact) > 300.0);
+/// assert!(estimated_seconds(p, Method::Compensated) < 30.0);
+/// ```
+pub fn estimated_seconds(points: Points, method: Method) -> f64 {
+    let n = points.len() as f64;
+    if method == Method::Fast {
+        return n * n.max(2.0).log2() / 1e8;
+    }
+    let rate = PAIR_FACTORS_PER_SECOND
+        .iter()
+        .find(|(m, _)| *m == method)
+        .map_or(1e8, |(_, r)| *r);
+    n * (n + 1.0) / 2.0 * points.dims.max(1) as f64 / rate
+}
+
+/// The estimated wall time of `choice` on `points` (see [`estimated_seconds`]): for `auto`,
+/// the compensated pass plus, where it may follow, the exact one within
+/// [`AUTO_EXACT_SECONDS`].
+pub fn estimated_choice_seconds(points: Points, kind: Kind, choice: MethodChoice) -> f64 {
+    let fast_applies = kind == Kind::L2Star && points.dims == 2;
+    match choice {
+        MethodChoice::Naive => estimated_seconds(points, Method::Naive),
+        MethodChoice::Compensated => estimated_seconds(points, Method::Compensated),
+        MethodChoice::Exact => estimated_seconds(points, Method::Exact),
+        MethodChoice::Fast => estimated_seconds(points, Method::Fast),
+        MethodChoice::Auto if fast_applies => estimated_seconds(points, Method::Fast),
+        MethodChoice::Auto => {
+            let exact = estimated_seconds(points, Method::Exact);
+            estimated_seconds(points, Method::Compensated)
+                + if exact <= AUTO_EXACT_SECONDS {
+                    exact
+                } else {
+                    0.0
+                }
+        }
+    }
+}
+
+/// Whether `auto`, having computed the compensated value with relative error bound `bound`,
+/// keeps it rather than computing exactly (estimated at `exact_seconds`): when the bound is
+/// within [`AUTO_REL_ERROR`], or when there is a bound and exact would take longer than
+/// [`AUTO_EXACT_SECONDS`]. Without a proven bound it never keeps it.
+pub fn auto_keeps_compensated(bound: Option<f64>, exact_seconds: f64) -> bool {
+    match bound {
+        None => false,
+        Some(b) => b <= AUTO_REL_ERROR || exact_seconds > AUTO_EXACT_SECONDS,
+    }
+}
+
 /// Refuses an exact computation past [`EXACT_MAX_BITS`] or [`EXACT_MAX_LIMB_PRODUCTS`], naming
 /// its cost.
 fn exact_within_budget(points: Points) -> Result<(), String> {
@@ -54,7 +128,8 @@ fn exact_within_budget(points: Points) -> Result<(), String> {
 
 /// A requested method; [`MethodChoice::Auto`] picks the fastest one whose relative error
 /// bound is at most [`AUTO_REL_ERROR`]: fast for 2-D L2-star, else compensated when its bound
-/// holds, else exact.
+/// holds, else exact when it takes at most [`AUTO_EXACT_SECONDS`], else compensated with its
+/// proven (looser) bound.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum MethodChoice {
     /// The fastest method proven within [`AUTO_REL_ERROR`].
@@ -143,7 +218,8 @@ pub fn compute(points: Points, kind: Kind, method: MethodChoice) -> Result<Discr
                 fast2d::fast(points).expect("2-D")
             } else {
                 let c = compensated::compensated(points, kind);
-                if c.rel_error_bound.is_some_and(|b| b <= AUTO_REL_ERROR) {
+                let exact_seconds = estimated_seconds(points, Method::Exact);
+                if auto_keeps_compensated(c.rel_error_bound, exact_seconds) {
                     c
                 } else {
                     exact_within_budget(points).map_err(|e| {
@@ -170,6 +246,56 @@ impl std::str::FromStr for MethodChoice {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn auto_keeps_a_proven_bound_when_exact_would_take_long_and_never_an_unproven_one() {
+        let quick = AUTO_EXACT_SECONDS / 2.0;
+        let long = AUTO_EXACT_SECONDS * 2.0;
+        assert!(auto_keeps_compensated(Some(AUTO_REL_ERROR), long));
+        assert!(auto_keeps_compensated(Some(AUTO_REL_ERROR), quick));
+        assert!(!auto_keeps_compensated(Some(AUTO_REL_ERROR * 10.0), quick));
+        assert!(auto_keeps_compensated(Some(AUTO_REL_ERROR * 10.0), long));
+        assert!(!auto_keeps_compensated(None, long));
+        assert!(!auto_keeps_compensated(None, quick));
+        // At the limit itself exact still runs.
+        assert!(!auto_keeps_compensated(
+            Some(AUTO_REL_ERROR * 10.0),
+            AUTO_EXACT_SECONDS
+        ));
+    }
+
+    #[test]
+    fn estimates_grow_with_pairs_and_dimensions_and_rank_the_methods() {
+        let words = vec![0u64; 4096 * 6];
+        let at = |n: usize, d: usize| Points {
+            words: &words[..n * d],
+            dims: d,
+            width: gartowen_core::Width::W64,
+        };
+        let e = |n, d, m| estimated_seconds(at(n, d), m);
+        // N(N+1)/2 pairs: doubling N about quadruples the time; d multiplies it.
+        let ratio = e(4096, 3, Method::Exact) / e(2048, 3, Method::Exact);
+        assert!((ratio - 4.0).abs() < 0.01, "{ratio}");
+        let ratio = e(1024, 6, Method::Exact) / e(1024, 3, Method::Exact);
+        assert!((ratio - 2.0).abs() < 1e-9, "{ratio}");
+        assert!(e(4096, 6, Method::Exact) > e(4096, 6, Method::Naive));
+        assert!(e(4096, 6, Method::Naive) > e(4096, 6, Method::Compensated));
+        assert!(e(4096, 2, Method::Compensated) > e(4096, 2, Method::Fast));
+        // 16,384 points in 6 dimensions took 16 s (l2star) and 29 s (cd) exactly here.
+        let words = vec![0u64; 16_384 * 6];
+        let p = Points {
+            words: &words,
+            dims: 6,
+            width: gartowen_core::Width::W64,
+        };
+        let exact = estimated_seconds(p, Method::Exact);
+        assert!((16.0..=60.0).contains(&exact), "{exact}");
+        assert_eq!(
+            estimated_choice_seconds(p, Kind::Centered, MethodChoice::Auto),
+            estimated_seconds(p, Method::Compensated),
+            "auto does not plan an exact pass past its limit"
+        );
+    }
 
     #[test]
     fn names_round_trip_and_the_error_lists_every_method() {

@@ -41,7 +41,9 @@ pub enum PairsArg {
 /// All values are D² (squared). Note: scipy.stats.qmc.discrepancy returns D (the root) for
 /// L2-star but D² for CD and WD; pass --root for D. Plain f64 sums cancel catastrophically
 /// (terms near 3^-d, D² near 1e-10), so `auto` picks the fastest method whose error bound is at
-/// most 1e-12: fast for 2-D L2-star, else compensated, else exact.
+/// most 1e-12: fast for 2-D L2-star, else compensated, else exact when it takes at most about
+/// 10 s, else compensated with its proven (looser) bound. Jobs are estimated first: over 5 s
+/// the estimate is printed, over --max-seconds the job is refused.
 ///
 /// Examples:
 ///   gartowen discrepancy sobol.npy --kind l2star
@@ -70,6 +72,34 @@ pub struct DiscrepancyArgs {
     /// Print JSON.
     #[arg(long)]
     pub json: bool,
+    /// Refuse a job estimated to take longer than this many seconds (estimates are for a
+    /// 2-core machine; jobs over 5 s print theirs first). The pair sums cost N² × d.
+    #[arg(long, default_value_t = 600.0)]
+    pub max_seconds: f64,
+}
+
+/// Jobs estimated past this many seconds announce their estimate on stderr.
+const ANNOUNCE_SECONDS: f64 = 5.0;
+
+/// The estimated seconds of the whole job: the joint value and the pairs asked for.
+fn estimate(points: Points, kind: Kind, choice: MethodChoice, pairs: Option<PairsArg>) -> f64 {
+    use gartowen::discrepancy::choice::estimated_choice_seconds;
+    let joint = estimated_choice_seconds(points, kind, choice);
+    let d = points.dims;
+    let count = match pairs {
+        None => 0,
+        Some(PairsArg::First) => d.saturating_sub(1),
+        Some(PairsArg::All) => d * d.saturating_sub(1) / 2,
+    };
+    if count == 0 {
+        return joint;
+    }
+    let pair = Points {
+        words: &points.words[..points.len() * 2],
+        dims: 2,
+        width: points.width,
+    };
+    joint + count as f64 * estimated_choice_seconds(pair, kind, choice)
 }
 
 fn method_choice(method: MethodArg) -> MethodChoice {
@@ -97,6 +127,34 @@ pub fn run(a: DiscrepancyArgs) -> Result<ExitCode, CliError> {
         width: set.width(),
     };
     let choice = method_choice(a.method);
+    if a.max_seconds.is_nan() || a.max_seconds <= 0.0 {
+        return Err(CliError::Usage(format!(
+            "--max-seconds {} is not a positive number of seconds",
+            a.max_seconds
+        )));
+    }
+    let seconds = estimate(points, kind, choice, a.pairs);
+    let what = format!(
+        "{} by method {:?} on {n} points in {d} dimensions{}: estimated {seconds:.0} s on a 2-core machine",
+        kind.name(),
+        a.method,
+        if a.pairs.is_some() { " with pairs" } else { "" }
+    )
+    .to_lowercase();
+    if seconds > a.max_seconds {
+        return Err(CliError::Usage(format!(
+            "{what}, over --max-seconds {}; raise --max-seconds to run it, or use fewer points{}",
+            a.max_seconds,
+            if a.method == MethodArg::Exact {
+                ", or --method compensated (it reports its proven error bound)"
+            } else {
+                ""
+            }
+        )));
+    }
+    if seconds > ANNOUNCE_SECONDS {
+        eprintln!("gartowen: {what}");
+    }
     let usage = |e: String| CliError::Usage(format!("--{e}"));
     let (joint, secs) = timed_discrepancy(points, kind, choice).map_err(usage)?;
     let pair_reports = match a.pairs {
