@@ -153,6 +153,29 @@ pub fn read_points_typed(
     }
 }
 
+/// The word width and item size of a .npy dtype gartowen reads (little-endian float64,
+/// uint32, uint64); the error names the dtype, its byte order where that is the trouble, and
+/// the dtypes accepted.
+fn npy_dtype(descr: &str) -> Result<(Width, usize), String> {
+    let descr = descr.trim_matches('\'');
+    let accepted = "float64 values in [0,1) ('<f8') or uint32/uint64 words ('<u4', '<u8')";
+    if let Some(rest) = descr.strip_prefix('>') {
+        if matches!(rest, "f8" | "u4" | "u8") {
+            return Err(format!(
+                "dtype '{descr}' is big-endian; gartowen reads little-endian {accepted}: \
+                 convert with a.astype(a.dtype.newbyteorder('<'))"
+            ));
+        }
+    }
+    match descr.trim_start_matches(['<', '|', '=']) {
+        "f8" | "u8" => Ok((Width::W64, 8)),
+        "u4" => Ok((Width::W32, 4)),
+        _ => Err(format!(
+            "unsupported dtype '{descr}': gartowen reads {accepted}"
+        )),
+    }
+}
+
 /// The first bytes of every .npy file.
 const NPY_MAGIC: &[u8] = b"\x93NUMPY";
 
@@ -305,17 +328,12 @@ fn decode_npy(
             format!("unreadable shape in the header: {shape:?}"),
         ));
     }
-    // The element count must match the data that follows, byte for byte.
+    // The dtype first (a wrong one is named as such), then the element count must match the
+    // data that follows, byte for byte.
+    let descr = npy.dtype().descr();
+    let (width, item) = npy_dtype(&descr).map_err(|e| bad(path, e))?;
     let elements = npy.len();
-    let item = match npy
-        .dtype()
-        .descr()
-        .trim_matches('\'')
-        .trim_start_matches(['<', '|', '='])
-    {
-        "u4" => 4u64,
-        _ => 8,
-    };
+    let item = item as u64;
     if elements.checked_mul(item) != Some(data_bytes as u64) {
         return Err(bad(
             path,
@@ -338,7 +356,6 @@ fn decode_npy(
         return Err(bad(path, format!("empty array of shape {shape:?}")));
     }
     let fortran = npy.order() == npyz::Order::Fortran;
-    let descr = npy.dtype().descr();
     // Decoded straight into columns: no intermediate copies of the values.
     // Element k of the data is (point, dimension) (k / dims, k % dims) in C order and
     // (k % n, k / n) in Fortran order.
@@ -348,18 +365,7 @@ fn decode_npy(
         |k, _, dims| (k / dims, k % dims)
     };
     let dtype = descr.trim_matches('\'').trim_start_matches(['<', '|', '=']);
-    let (width, item) = match dtype {
-        "f8" | "u8" => (Width::W64, 8usize),
-        "u4" => (Width::W32, 4),
-        other => {
-            return Err(bad(
-                path,
-                format!(
-                "unsupported dtype '{other}': use float64 values in [0,1) or uint32/uint64 words"
-            ),
-            ))
-        }
-    };
+    let item = item as usize;
     let floats = dtype == "f8";
     let mut coords = vec![vec![0u64; n]; dims];
     let mut block = vec![0u8; (1 << 20) / item * item];
@@ -397,8 +403,10 @@ fn decode_npy(
 }
 
 /// Lines that carry data: trimmed, skipping blank lines and '#' comments, with 1-based numbers.
+/// Lines end in LF, CRLF or a lone CR (old Mac files; read as one line they once merged two points into one).
 fn data_lines(text: &str) -> impl Iterator<Item = (usize, &str)> {
-    text.lines()
+    text.split('\n')
+        .flat_map(|l| l.strip_suffix('\r').unwrap_or(l).split('\r'))
         .enumerate()
         .map(|(i, l)| (i + 1, l.trim()))
         .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'))

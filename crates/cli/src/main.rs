@@ -38,7 +38,10 @@ enum Command {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => return clap_exit(e),
+    };
     cleanup::install();
     let result = match cli.command {
         Command::Generate(a) => commands::generate::run(a),
@@ -58,6 +61,29 @@ fn main() -> ExitCode {
         Err(e) => {
             eprintln!("gartowen: error: {e}");
             ExitCode::from(e.exit_code())
+        }
+    }
+}
+
+/// Prints what clap has to say (help, version, a usage error) and the exit code: 0 for help
+/// and version, 2 otherwise. Help that cannot be written (a full disk) is an error, exit 2.
+fn clap_exit(e: clap::Error) -> ExitCode {
+    use std::io::Write;
+    let informational = matches!(
+        e.kind(),
+        clap::error::ErrorKind::DisplayHelp | clap::error::ErrorKind::DisplayVersion
+    );
+    if !informational {
+        let _ = e.print();
+        return ExitCode::from(error::EXIT_USAGE);
+    }
+    let text = e.render().to_string();
+    let mut out = std::io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|_| out.flush()) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(err) => {
+            eprintln!("gartowen: error: cannot write the help to standard output: {err}");
+            ExitCode::from(error::EXIT_USAGE)
         }
     }
 }
