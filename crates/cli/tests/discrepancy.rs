@@ -170,7 +170,7 @@ fn points(dir: &std::path::Path, n: u64, dims: u32) -> String {
 fn a_job_past_max_seconds_is_refused_before_it_starts() {
     let dir = tempfile::tempdir().unwrap();
     let f = points(dir.path(), 65_536, 16);
-    // About 25 minutes exactly: refused at the default limit, at once.
+    // About 23 minutes exactly: refused at the default limit, at once.
     let started = std::time::Instant::now();
     let o = gartowen(&["discrepancy", &f, "--method", "exact"]);
     let err = String::from_utf8_lossy(&o.stderr);
