@@ -81,6 +81,55 @@ pub struct DiscrepancyArgs {
 /// Jobs estimated past this many seconds announce their estimate on stderr.
 const ANNOUNCE_SECONDS: f64 = 5.0;
 
+/// A progress bar on a terminal (hidden otherwise) that advances with the clock against the
+/// estimate, since the pair sums report no progress of their own; it stops short of the end
+/// until the job ends, and is cleared when dropped.
+struct ClockBar {
+    bar: indicatif::ProgressBar,
+    stop: std::sync::Arc<std::sync::atomic::AtomicBool>,
+    ticker: Option<std::thread::JoinHandle<()>>,
+}
+
+impl ClockBar {
+    fn start(estimate_seconds: f64) -> ClockBar {
+        use std::sync::atomic::{AtomicBool, Ordering};
+        let total = (estimate_seconds * 1000.0) as u64;
+        let bar = indicatif::ProgressBar::new(total.max(1));
+        bar.set_style(
+            indicatif::ProgressStyle::with_template("{msg} [{bar:40}] {elapsed} of about {prefix}")
+                .expect("template")
+                .progress_chars("=> "),
+        );
+        bar.set_message("discrepancy");
+        bar.set_prefix(format!("{estimate_seconds:.0} s (estimated)"));
+        let stop = std::sync::Arc::new(AtomicBool::new(false));
+        let (b, s) = (bar.clone(), stop.clone());
+        let started = std::time::Instant::now();
+        let ticker = std::thread::spawn(move || {
+            while !s.load(Ordering::Relaxed) {
+                let ms = started.elapsed().as_millis() as u64;
+                b.set_position(ms.min(total.saturating_sub(total / 100)));
+                std::thread::sleep(std::time::Duration::from_millis(200));
+            }
+        });
+        ClockBar {
+            bar,
+            stop,
+            ticker: Some(ticker),
+        }
+    }
+}
+
+impl Drop for ClockBar {
+    fn drop(&mut self) {
+        self.stop.store(true, std::sync::atomic::Ordering::Relaxed);
+        if let Some(t) = self.ticker.take() {
+            let _ = t.join();
+        }
+        self.bar.finish_and_clear();
+    }
+}
+
 /// The estimated seconds of the whole job: the joint value and the pairs asked for.
 fn estimate(points: Points, kind: Kind, choice: MethodChoice, pairs: Option<PairsArg>) -> f64 {
     use gartowen::discrepancy::choice::estimated_choice_seconds;
@@ -156,12 +205,21 @@ pub fn run(a: DiscrepancyArgs) -> Result<ExitCode, CliError> {
         eprintln!("gartowen: {what}");
     }
     let usage = |e: String| CliError::Usage(format!("--{e}"));
-    let (joint, secs) = timed_discrepancy(points, kind, choice).map_err(usage)?;
-    let pair_reports = match a.pairs {
-        Some(which) => discrepancy_pairs(points, kind, choice, a.root, which == PairsArg::All)
-            .map_err(usage)?,
-        None => Vec::new(),
-    };
+    let clock = (seconds > ANNOUNCE_SECONDS).then(|| ClockBar::start(seconds));
+    let computed = timed_discrepancy(points, kind, choice).and_then(|(joint, secs)| {
+        Ok((
+            joint,
+            secs,
+            match a.pairs {
+                Some(which) => {
+                    discrepancy_pairs(points, kind, choice, a.root, which == PairsArg::All)?
+                }
+                None => Vec::new(),
+            },
+        ))
+    });
+    drop(clock);
+    let (joint, secs, pair_reports) = computed.map_err(usage)?;
     if a.json {
         let mut result = discrepancy_json(&joint, secs, a.root);
         result["pairs"] = json!(pair_reports);
