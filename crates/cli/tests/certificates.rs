@@ -242,3 +242,72 @@ fn certificates_of_check_and_discrepancy_carry_a_digest_that_catches_edits() {
         assert!(String::from_utf8_lossy(&o.stderr).contains("digest"));
     }
 }
+
+/// A shard of the every-word sweep is checked field by field too: its level, seed,
+/// implementations, pieces and verdict; anything else edited is caught by the digest.
+#[test]
+fn a_tampered_sweep_shard_is_refused_naming_the_field() {
+    let dir = tempfile::tempdir().unwrap();
+    let shard = dir.path().join("w1.json");
+    let shard = shard.to_str().unwrap();
+    let o = gartowen(&[
+        "verify",
+        "--level",
+        "exhaustive",
+        "--dims",
+        "0",
+        "--impl",
+        "lk-hash",
+        "--shard",
+        "1/4096",
+        "--json",
+        shard,
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let o = gartowen(&["certificate", "check", shard]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let original: Value = serde_json::from_str(&std::fs::read_to_string(shard).unwrap()).unwrap();
+    let edits: [(Edit, &str); 6] = [
+        (|d| d["seeds"][0] = 5.into(), "seeds"),
+        (
+            |d| d["parameters"]["level"] = "quick".into(),
+            "parameters.level",
+        ),
+        (
+            |d| d["parameters"]["sweep"]["implementations"][0] = "lk-hash-2".into(),
+            "parameters.sweep.implementations[0]",
+        ),
+        (|d| d["verdict"] = "fail".into(), "verdict"),
+        (
+            |d| d["result"]["pieces"][0]["implementation"] = "art-owen-2".into(),
+            "result.pieces[0]",
+        ),
+        (
+            |d| d["result"]["pieces"][0]["seconds"] = 99.0.into(),
+            "digest",
+        ),
+    ];
+    let tampered = dir.path().join("tampered.json");
+    for (edit, field) in edits {
+        let mut doc = original.clone();
+        edit(&mut doc);
+        std::fs::write(&tampered, doc.to_string()).unwrap();
+        let o = gartowen(&["certificate", "check", tampered.to_str().unwrap()]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{field}: {err}");
+        assert!(
+            err.contains(&format!("tampered.json: {field}")),
+            "{field}: {err}"
+        );
+    }
+}

@@ -38,7 +38,10 @@ pub fn run(a: CertificateArgs) -> Result<ExitCode, CliError> {
     let registry = gartowen::registry();
     for p in &files {
         let (cert, text) = super::shards::read_certificate(p)?;
-        let what = if cert.command == "verify" && cert.parameters.get("sweep").is_none() {
+        let sweep = !cert.parameters["sweep"].is_null();
+        let what = if cert.command == "verify" && sweep {
+            super::sweep::audit(&cert).map_err(|e| super::shards::refuse(p, e))?
+        } else if cert.command == "verify" {
             let run = gartowen::audit::audit_verify(&cert, &registry)
                 .map_err(|e| super::shards::refuse(p, e))?;
             let (i, n) = run.shard;

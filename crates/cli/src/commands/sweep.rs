@@ -480,3 +480,97 @@ pub fn merge(paths: &[PathBuf], json: Option<&PathBuf>) -> Result<ExitCode, CliE
     }
     finish(json, &params, Shard::ALL, cert.inputs, records, None)
 }
+
+/// Checks a certificate of the every-word sweep field by field (`certificate check`): the tool
+/// version, the sweep's parameters and seed, the shard record, every piece belonging to the
+/// sweep, and the verdict following from the pieces (a shard) or from the implementations'
+/// verdicts (a whole sweep). Returns what was checked, in words.
+pub fn audit(cert: &Certificate) -> Result<String, CliError> {
+    let field = |f: &str, m: String| CliError::Usage(format!("{f}: {m}"));
+    let ours = env!("CARGO_PKG_VERSION");
+    if cert.tool_version != ours {
+        return Err(field(
+            "tool_version",
+            format!(
+                "made by gartowen {}; this build ({ours}) checks only its own certificates",
+                cert.tool_version
+            ),
+        ));
+    }
+    if cert.parameters["level"] != "exhaustive" {
+        return Err(field(
+            "parameters.level",
+            format!("{}, but a sweep is exhaustive", cert.parameters["level"]),
+        ));
+    }
+    let params: SweepParameters = serde_json::from_value(cert.parameters["sweep"].clone())
+        .map_err(|e| field("parameters.sweep", e.to_string()))?;
+    if cert.seeds != [params.seed] {
+        return Err(field(
+            "seeds",
+            format!("{:?}, but the sweep's seed is {}", cert.seeds, params.seed),
+        ));
+    }
+    let shard = &cert.parameters["shard"];
+    let (index, count) = match (shard["index"].as_u64(), shard["count"].as_u64()) {
+        (Some(i), Some(n)) if 1 <= i && i <= n => (i, n),
+        _ => return Err(field("parameters.shard", shard.to_string())),
+    };
+    if params.external.is_none() {
+        let registry = gartowen::registry();
+        for (k, name) in params.implementations.iter().enumerate() {
+            if name.chars().any(char::is_control) || registry.build(name, 0).is_err() {
+                return Err(field(
+                    &format!("parameters.sweep.implementations[{k}]"),
+                    format!("{name:?} is no registry implementation"),
+                ));
+            }
+        }
+    }
+    let external_failure = !cert.result["external_failure"].is_null();
+    let failed = if count == 1 && !external_failure {
+        let verdicts: Vec<ImplementationVerdict> =
+            serde_json::from_value(cert.result["implementations"].clone())
+                .map_err(|e| field("result.implementations", e.to_string()))?;
+        let names: Vec<&String> = verdicts.iter().map(|v| &v.implementation).collect();
+        if names != params.implementations.iter().collect::<Vec<_>>() {
+            return Err(field(
+                "result.implementations",
+                format!("{names:?}, but the sweep has {:?}", params.implementations),
+            ));
+        }
+        verdicts.iter().any(|v| !v.passed)
+    } else {
+        let pieces: Vec<PieceRecord> = serde_json::from_value(cert.result["pieces"].clone())
+            .map_err(|e| field("result.pieces", e.to_string()))?;
+        if let Some((k, r)) = pieces.iter().enumerate().find(|(_, r)| {
+            !params.implementations.contains(&r.implementation)
+                || !(params.dims.first..=params.dims.last).contains(&r.piece.dim)
+        }) {
+            return Err(field(
+                &format!("result.pieces[{k}]"),
+                format!(
+                    "a piece of {} dimension {} is not part of this sweep",
+                    r.implementation, r.piece.dim
+                ),
+            ));
+        }
+        external_failure || pieces.iter().any(|r| r.piece.failure.is_some())
+    };
+    let verdict = if failed {
+        CertVerdict::Fail
+    } else {
+        CertVerdict::Pass
+    };
+    if cert.verdict != verdict {
+        return Err(field(
+            "verdict",
+            format!("says {:?}, the sweep gives {verdict:?}", cert.verdict).to_lowercase(),
+        ));
+    }
+    Ok(format!(
+        "every-word sweep of {} implementation(s), {}, shard {index}/{count}, fields checked",
+        params.implementations.len(),
+        params.dims.label()
+    ))
+}
