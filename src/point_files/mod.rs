@@ -89,16 +89,31 @@ pub(crate) fn read_limited(
     probe: usize,
     check: impl Fn(&[u8]) -> Result<(), String>,
 ) -> Result<Vec<u8>, PointFileError> {
+    let file = std::fs::File::open(path).map_err(|e| cannot(path, e))?;
+    read_limited_from(file, path, limit, probe, check)
+}
+
+/// An OS error reading `path`, in words.
+pub(crate) fn cannot(path: &Path, e: std::io::Error) -> PointFileError {
+    PointFileError::Io(format!("cannot read {}: {e}", path.display()))
+}
+
+/// [`read_limited`] on a file already open (`path` names it in errors).
+pub(crate) fn read_limited_from(
+    mut file: std::fs::File,
+    path: &Path,
+    limit: u64,
+    probe: usize,
+    check: impl Fn(&[u8]) -> Result<(), String>,
+) -> Result<Vec<u8>, PointFileError> {
     use std::io::Read;
-    let cannot =
-        |e: std::io::Error| PointFileError::Io(format!("cannot read {}: {e}", path.display()));
+    let cannot = |e: std::io::Error| cannot(path, e);
     let too_big = || {
         PointFileError::Invalid(format!(
             "{}: larger than {limit} bytes, the most gartowen reads",
             path.display()
         ))
     };
-    let mut file = std::fs::File::open(path).map_err(cannot)?;
     let meta = file.metadata().map_err(cannot)?;
     if meta.is_dir() {
         return Err(PointFileError::Invalid(format!(

@@ -1,7 +1,7 @@
 //! The .npy reader: the header checked before it is trusted, the data decoded straight into
 //! the point set's columns.
 
-use super::{bad, read_limited, FloatWords, PointFileError, MAX_INPUT_BYTES};
+use super::{bad, read_limited_from, FloatWords, PointFileError, MAX_INPUT_BYTES};
 use gartowen_core::Width;
 use gartowen_netcheck::PointSet;
 use std::path::Path;
@@ -134,9 +134,9 @@ pub(crate) fn read_npy_file(
     let file = std::fs::File::open(path).map_err(cannot)?;
     let meta = file.metadata().map_err(cannot)?;
     if !meta.is_file() || meta.len() > MAX_INPUT_BYTES {
-        drop(file);
-        // A stream is refused at its first bytes unless they are the .npy magic.
-        let bytes = read_limited(path, MAX_INPUT_BYTES, NPY_MAGIC.len(), |first| {
+        // A stream is refused at its first bytes unless they are the .npy magic; it is read
+        // from the handle already open (a FIFO cannot be opened twice).
+        let bytes = read_limited_from(file, path, MAX_INPUT_BYTES, NPY_MAGIC.len(), |first| {
             if first == NPY_MAGIC {
                 Ok(())
             } else {

@@ -381,3 +381,48 @@ fn base_3_floats_are_snapped_refused_when_ambiguous_and_floored_on_request() {
         String::from_utf8_lossy(&o.stderr)
     );
 }
+
+/// A point file given as a FIFO is opened once and read whole: it was once opened twice, so the
+/// writer's data went to the first open and the second waited for a writer that never came.
+#[test]
+fn a_fifo_input_is_read_once_in_every_format() {
+    let dir = tempfile::tempdir().unwrap();
+    for (ext, extra) in [("npy", vec![]), ("hex", vec!["--format", "hex"])] {
+        let mut args = vec!["--seq", "sobol", "--dims", "2", "--n", "64"];
+        args.extend(&extra);
+        let file = generate(dir.path(), &format!("s.{ext}"), &args);
+        let fifo = dir.path().join(format!("fifo.{ext}"));
+        assert!(Command::new("mkfifo")
+            .arg(&fifo)
+            .status()
+            .unwrap()
+            .success());
+        let (src, dst) = (file.clone(), fifo.clone());
+        let writer = std::thread::spawn(move || {
+            let bytes = std::fs::read(src).unwrap();
+            // Fails with a broken pipe if the reader closes early; the check below says why.
+            let _ = std::fs::write(dst, bytes);
+        });
+        let mut child = Command::new(env!("CARGO_BIN_EXE_gartowen"))
+            .args(["check", fifo.to_str().unwrap(), "--base", "2"])
+            .stdout(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        let started = std::time::Instant::now();
+        let status = loop {
+            if let Some(s) = child.try_wait().unwrap() {
+                break s;
+            }
+            if started.elapsed().as_secs() > 30 {
+                let _ = child.kill();
+                panic!("{ext}: check of a FIFO still running after 30 s");
+            }
+            std::thread::sleep(std::time::Duration::from_millis(20));
+        };
+        writer.join().unwrap();
+        let mut out = String::new();
+        std::io::Read::read_to_string(&mut child.stdout.take().unwrap(), &mut out).unwrap();
+        assert!(status.success(), "{ext}: {out}");
+        assert!(out.contains("t = 0 (m = 6, s = 2"), "{ext}: {out}");
+    }
+}

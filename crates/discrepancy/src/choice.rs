@@ -67,7 +67,12 @@ const PAIR_FACTORS_PER_SECOND: [(Method, f64); 3] = [
 /// assert!(estimated_seconds(p, Method::Compensated) < 30.0);
 /// ```
 pub fn estimated_seconds(points: Points, method: Method) -> f64 {
-    let n = points.len() as f64;
+    estimated_seconds_for(points.len(), points.dims, method)
+}
+
+/// [`estimated_seconds`] for `n` points in `dims` dimensions, before any word is read.
+pub fn estimated_seconds_for(n: usize, dims: usize, method: Method) -> f64 {
+    let n = n as f64;
     if method == Method::Fast {
         return n * n.max(2.0).log2() / 1e8;
     }
@@ -75,23 +80,34 @@ pub fn estimated_seconds(points: Points, method: Method) -> f64 {
         .iter()
         .find(|(m, _)| *m == method)
         .map_or(1e8, |(_, r)| *r);
-    n * (n + 1.0) / 2.0 * points.dims.max(1) as f64 / rate
+    n * (n + 1.0) / 2.0 * dims.max(1) as f64 / rate
 }
 
 /// The estimated wall time of `choice` on `points` (see [`estimated_seconds`]): for `auto`,
 /// the compensated pass plus, where it may follow, the exact one within
 /// [`AUTO_EXACT_SECONDS`].
 pub fn estimated_choice_seconds(points: Points, kind: Kind, choice: MethodChoice) -> f64 {
-    let fast_applies = kind == Kind::L2Star && points.dims == 2;
+    estimated_choice_seconds_for(points.len(), points.dims, kind, choice)
+}
+
+/// [`estimated_choice_seconds`] for `n` points in `dims` dimensions, before any word is read.
+pub fn estimated_choice_seconds_for(
+    n: usize,
+    dims: usize,
+    kind: Kind,
+    choice: MethodChoice,
+) -> f64 {
+    let fast_applies = kind == Kind::L2Star && dims == 2;
+    let estimated_seconds = |method| estimated_seconds_for(n, dims, method);
     match choice {
-        MethodChoice::Naive => estimated_seconds(points, Method::Naive),
-        MethodChoice::Compensated => estimated_seconds(points, Method::Compensated),
-        MethodChoice::Exact => estimated_seconds(points, Method::Exact),
-        MethodChoice::Fast => estimated_seconds(points, Method::Fast),
-        MethodChoice::Auto if fast_applies => estimated_seconds(points, Method::Fast),
+        MethodChoice::Naive => estimated_seconds(Method::Naive),
+        MethodChoice::Compensated => estimated_seconds(Method::Compensated),
+        MethodChoice::Exact => estimated_seconds(Method::Exact),
+        MethodChoice::Fast => estimated_seconds(Method::Fast),
+        MethodChoice::Auto if fast_applies => estimated_seconds(Method::Fast),
         MethodChoice::Auto => {
-            let exact = estimated_seconds(points, Method::Exact);
-            estimated_seconds(points, Method::Compensated)
+            let exact = estimated_seconds(Method::Exact);
+            estimated_seconds(Method::Compensated)
                 + if exact <= AUTO_EXACT_SECONDS {
                     exact
                 } else {

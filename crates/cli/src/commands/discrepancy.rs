@@ -130,25 +130,17 @@ impl Drop for ClockBar {
     }
 }
 
-/// The estimated seconds of the whole job: the joint value and the pairs asked for.
-fn estimate(points: Points, kind: Kind, choice: MethodChoice, pairs: Option<PairsArg>) -> f64 {
-    use gartowen::discrepancy::choice::estimated_choice_seconds;
-    let joint = estimated_choice_seconds(points, kind, choice);
-    let d = points.dims;
+/// The estimated seconds of the whole job on `n` points in `d` dimensions: the joint value and
+/// the pairs asked for.
+fn estimate(n: usize, d: usize, kind: Kind, choice: MethodChoice, pairs: Option<PairsArg>) -> f64 {
+    use gartowen::discrepancy::choice::estimated_choice_seconds_for;
+    let joint = estimated_choice_seconds_for(n, d, kind, choice);
     let count = match pairs {
         None => 0,
         Some(PairsArg::First) => d.saturating_sub(1),
         Some(PairsArg::All) => d * d.saturating_sub(1) / 2,
     };
-    if count == 0 {
-        return joint;
-    }
-    let pair = Points {
-        words: &points.words[..points.len() * 2],
-        dims: 2,
-        width: points.width,
-    };
-    joint + count as f64 * estimated_choice_seconds(pair, kind, choice)
+    joint + count as f64 * estimated_choice_seconds_for(n, 2, kind, choice)
 }
 
 fn method_choice(method: MethodArg) -> MethodChoice {
@@ -167,22 +159,18 @@ pub fn run(a: DiscrepancyArgs) -> Result<ExitCode, CliError> {
         .kind
         .parse()
         .map_err(|e| CliError::Usage(format!("{e}")))?;
-    let set = read_points(&a.file, a.format)?;
-    let (n, d) = (set.len(), set.dims());
-    let words: Vec<u64> = (0..n).flat_map(|i| set.point(i)).collect();
-    let points = Points {
-        words: &words,
-        dims: d,
-        width: set.width(),
-    };
-    let choice = method_choice(a.method);
     if a.max_seconds.is_nan() || a.max_seconds <= 0.0 {
         return Err(CliError::Usage(format!(
             "--max-seconds {} is not a positive number of seconds",
             a.max_seconds
         )));
     }
-    let seconds = estimate(points, kind, choice, a.pairs);
+    let set = read_points(&a.file, a.format)?;
+    let (n, d) = (set.len(), set.dims());
+    let choice = method_choice(a.method);
+    // Estimated before the row-major copy of the words is made: a job refused for its length
+    // never allocates it (a 1 GiB file once aborted here).
+    let seconds = estimate(n, d, kind, choice, a.pairs);
     let what = format!(
         "{} by method {:?} on {n} points in {d} dimensions{}: estimated {seconds:.0} s on a 2-core machine",
         kind.name(),
@@ -204,6 +192,22 @@ pub fn run(a: DiscrepancyArgs) -> Result<ExitCode, CliError> {
     if seconds > ANNOUNCE_SECONDS {
         eprintln!("gartowen: {what}");
     }
+    // Fallible: a set that fits memory once may not fit twice; say so instead of aborting.
+    let mut words: Vec<u64> = Vec::new();
+    words.try_reserve_exact(n * d).map_err(|_| {
+        CliError::Usage(format!(
+            "{}: {n} points in {d} dimensions need {} more bytes for their words, which this \
+             process cannot allocate; use fewer points",
+            a.file.display(),
+            n * d * 8
+        ))
+    })?;
+    words.extend((0..n).flat_map(|i| set.point(i)));
+    let points = Points {
+        words: &words,
+        dims: d,
+        width: set.width(),
+    };
     let usage = |e: String| CliError::Usage(format!("--{e}"));
     let clock = (seconds > ANNOUNCE_SECONDS).then(|| ClockBar::start(seconds));
     let computed = timed_discrepancy(points, kind, choice).and_then(|(joint, secs)| {
