@@ -65,6 +65,9 @@ pub fn read_text_bounded(path: &Path, limit: u64) -> Result<String, PointFileErr
         .map_err(|_| bad(path, "is not UTF-8 text"))
 }
 
+/// The largest stream read (256 MiB): its buffer may double past it while it grows.
+pub const MAX_STREAM_BYTES: u64 = 1 << 28;
+
 /// Bytes of a text input looked at before the rest is read.
 pub(crate) const TEXT_PROBE: usize = 4096;
 
@@ -108,13 +111,26 @@ pub(crate) fn read_limited_from(
 ) -> Result<Vec<u8>, PointFileError> {
     use std::io::Read;
     let cannot = |e: std::io::Error| cannot(path, e);
+    let meta = file.metadata().map_err(cannot)?;
+    // A stream (pipe, FIFO, device) has no size to check first and grows its buffer by
+    // doubling: it gets a smaller budget, so that reading it stays well inside memory.
+    let stream = !meta.is_file();
+    let limit = if stream {
+        limit.min(MAX_STREAM_BYTES)
+    } else {
+        limit
+    };
     let too_big = || {
         PointFileError::Invalid(format!(
-            "{}: larger than {limit} bytes, the most gartowen reads",
-            path.display()
+            "{}: larger than {limit} bytes, the most gartowen reads{}",
+            path.display(),
+            if stream {
+                " from a stream (write it to a file for more)"
+            } else {
+                ""
+            }
         ))
     };
-    let meta = file.metadata().map_err(cannot)?;
     if meta.is_dir() {
         return Err(PointFileError::Invalid(format!(
             "{} is a directory",

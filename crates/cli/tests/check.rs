@@ -426,3 +426,31 @@ fn a_fifo_input_is_read_once_in_every_format() {
         assert!(out.contains("t = 0 (m = 6, s = 2"), "{ext}: {out}");
     }
 }
+
+/// An endless stream of valid lines is refused at the stream budget (256 MiB), in about its own
+/// size of memory, instead of growing toward the 2 GiB file limit.
+#[test]
+fn an_endless_stream_is_refused_at_the_stream_budget() {
+    use std::io::Write;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_gartowen"))
+        .args(["check", "/dev/stdin", "--base", "2", "--format", "hex"])
+        .stdin(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let mut stdin = child.stdin.take().unwrap();
+    let writer = std::thread::spawn(move || {
+        let line = "80000000 40000000\n".repeat(4096);
+        // Ends when the reader stops reading (a broken pipe).
+        while stdin.write_all(line.as_bytes()).is_ok() {}
+    });
+    let o = child.wait_with_output().unwrap();
+    writer.join().unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("268435456 bytes") && err.contains("stream"),
+        "{err}"
+    );
+}
