@@ -555,3 +555,6 @@ fn same_law_check(got: &CheckResult, again: &CheckResult, field: &str) -> Result
     differs("value", number(got.value), number(again.value))?;
     differs("detail", got.detail.clone(), again.detail.clone())
 }
+
+#[cfg(test)]
+mod tests;
