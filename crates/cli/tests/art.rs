@@ -1,13 +1,6 @@
 //! End-to-end: every registered name generates, `:table=` works, bad tables are usage errors.
 
-use std::process::{Command, Output};
-
-fn gartowen(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gartowen"))
-        .args(args)
-        .output()
-        .expect("runs")
-}
+use crate::support::gartowen;
 
 #[test]
 fn every_registered_name_generates_and_is_reproducible() {

@@ -3,16 +3,9 @@
 //! level, and refuse an edit that kept the fields consistent by the content digest. Each
 //! tampered certificate of issue 38 is refused with exit 2 naming the field.
 
+use crate::support::gartowen;
 use serde_json::Value;
 use std::path::Path;
-use std::process::{Command, Output};
-
-fn gartowen(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gartowen"))
-        .args(args)
-        .output()
-        .unwrap()
-}
 
 const IMPLEMENTATIONS: [&str; 3] = ["lk-hash", "digital-shift", "owen-oracle:base=4"];
 

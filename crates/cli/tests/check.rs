@@ -1,14 +1,8 @@
 //! End-to-end tests of `gartowen check`: verdicts, exit codes, JSON and bad input.
 
+use crate::support::gartowen;
 use std::path::Path;
-use std::process::{Command, Output};
-
-fn gartowen(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gartowen"))
-        .args(args)
-        .output()
-        .expect("runs")
-}
+use std::process::Command;
 
 fn generate(dir: &Path, name: &str, args: &[&str]) -> String {
     let path = dir.join(name).to_str().unwrap().to_string();

@@ -2,15 +2,9 @@
 //! hard link) or another output is refused with exit 2 before anything is written, and the
 //! input is left byte for byte.
 
+use crate::support::gartowen;
 use std::path::Path;
-use std::process::{Command, Output};
-
-fn gartowen(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gartowen"))
-        .args(args)
-        .output()
-        .expect("runs")
-}
+use std::process::Output;
 
 fn refused(o: &Output, fragment: &str) {
     let stderr = String::from_utf8_lossy(&o.stderr);

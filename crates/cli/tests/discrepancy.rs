@@ -1,13 +1,7 @@
 //! End-to-end `gartowen discrepancy`: JSON fields, methods agree, bad input exits 2.
 
-use std::process::{Command, Output};
-
-fn gartowen(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gartowen"))
-        .args(args)
-        .output()
-        .expect("runs")
-}
+use crate::support::gartowen;
+use std::process::Output;
 
 fn json(o: &Output) -> serde_json::Value {
     serde_json::from_slice(&o.stdout)

@@ -1,14 +1,8 @@
 //! End-to-end tests of `gartowen generate`, `matrices` and `list`.
 
+use crate::support::gartowen;
 use std::path::Path;
 use std::process::{Command, Output};
-
-fn gartowen(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gartowen"))
-        .args(args)
-        .output()
-        .expect("binary runs")
-}
 
 fn stdout(o: &Output) -> String {
     String::from_utf8(o.stdout.clone()).unwrap()

@@ -1,14 +1,7 @@
 //! `--junit FILE` on verify, check and inspect: JUnit XML that a standard parser reads, with
 //! the schema's required elements and one failing testcase per failing check.
 
-use std::process::{Command, Output};
-
-fn gartowen(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gartowen"))
-        .args(args)
-        .output()
-        .expect("run gartowen")
-}
+use crate::support::gartowen;
 
 /// (suite name, testcase name, failed) for every testcase, after checking the elements and
 /// attributes the JUnit schema requires and that the counts agree with the cases.

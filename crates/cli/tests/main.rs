@@ -15,6 +15,7 @@ mod report;
 mod scene;
 mod scramble;
 mod stdout_errors;
+mod support;
 mod sweep;
 mod verify;
 mod verify_declared;

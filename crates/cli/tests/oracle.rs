@@ -1,13 +1,7 @@
 //! End-to-end: scrambled generation with the oracle, and `inspect` verdicts.
 
-use std::process::{Command, Output};
-
-fn gartowen(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gartowen"))
-        .args(args)
-        .output()
-        .expect("runs")
-}
+use crate::support::gartowen;
+use std::process::Output;
 
 fn words(o: &Output) -> Vec<Vec<u64>> {
     String::from_utf8_lossy(&o.stdout)

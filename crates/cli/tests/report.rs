@@ -1,13 +1,6 @@
 //! End-to-end `gartowen report --quick`: files, figures, and the baseline gate's exit codes.
 
-use std::process::{Command, Output};
-
-fn gartowen(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gartowen"))
-        .args(args)
-        .output()
-        .expect("runs")
-}
+use crate::support::gartowen;
 
 #[test]
 fn quick_report_writes_figures_and_the_baseline_gate_works() {

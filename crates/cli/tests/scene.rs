@@ -1,14 +1,8 @@
 //! End-to-end `gartowen scene`: files, user layouts and scramblers, bad input refused before
 //! any work with nothing written, and the baseline gate's exit codes.
 
+use crate::support::gartowen;
 use std::process::{Command, Output};
-
-fn gartowen(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gartowen"))
-        .args(args)
-        .output()
-        .expect("runs")
-}
 
 fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()

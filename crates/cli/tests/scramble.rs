@@ -1,14 +1,7 @@
 //! `gartowen scramble`: the user's own points, scrambled column by column, equal the points
 //! `generate` scrambles itself; bad input exits 2 and writes nothing.
 
-use std::process::{Command, Output};
-
-fn gartowen(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gartowen"))
-        .args(args)
-        .output()
-        .expect("run gartowen")
-}
+use crate::support::gartowen;
 
 #[test]
 fn scrambling_a_file_equals_generating_scrambled() {

@@ -1,15 +1,9 @@
 //! End-to-end `gartowen verify --level exhaustive --dims`: the every-word sweep, its shards and
 //! their merge, external programs, and the refusals.
 
+use crate::support::gartowen;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
-
-fn gartowen(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gartowen"))
-        .args(args)
-        .output()
-        .expect("runs")
-}
 
 fn stdout(o: &Output) -> String {
     String::from_utf8_lossy(&o.stdout).into_owned()

@@ -1,13 +1,7 @@
 //! End-to-end `gartowen verify`: exit codes, table and JSON report.
 
-use std::process::{Command, Output};
-
-fn gartowen(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gartowen"))
-        .args(args)
-        .output()
-        .expect("runs")
-}
+use crate::support::gartowen;
+use std::process::Command;
 
 #[test]
 fn verify_named_implementations_writes_json_and_exits_0() {

@@ -1,14 +1,7 @@
 //! End-to-end checks of the declared battery: `verify --list-checks`, and the `function`
 //! structure check on a program that is not one.
 
-use std::process::{Command, Output};
-
-fn gartowen(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gartowen"))
-        .args(args)
-        .output()
-        .expect("runs")
-}
+use crate::support::gartowen;
 
 #[test]
 fn list_checks_prints_the_battery_and_refuses_a_run_alongside() {
