@@ -173,6 +173,28 @@ mod tests {
     }
 
     #[test]
+    fn a_child_that_closed_its_stdin_fails_the_write_at_once_not_at_the_deadline() {
+        // The child closes its end of the pipe, then lives on: the write must fail with the
+        // pipe's own error (a broken pipe), not wait for room until the deadline.
+        let mut c = child("exec 0<&-; exec sleep 30");
+        let mut stdin = c.stdin.take().unwrap();
+        make_non_blocking(&stdin).unwrap();
+        std::thread::sleep(Duration::from_millis(200));
+        let frame = vec![0u8; 1 << 20];
+        let start = Instant::now();
+        let r = write_before(&mut stdin, &frame, start + Duration::from_secs(30), || {
+            false
+        });
+        let _ = c.kill();
+        let _ = c.wait();
+        assert!(
+            matches!(&r, Err(WriteStop::Io(e)) if e.kind() == io::ErrorKind::BrokenPipe),
+            "{r:?}"
+        );
+        assert!(start.elapsed() < Duration::from_secs(5));
+    }
+
+    #[test]
     fn a_child_seen_gone_ends_the_wait_before_the_deadline() {
         let mut c = child("exec sleep 30");
         let mut stdin = c.stdin.take().unwrap();
