@@ -297,6 +297,9 @@ mod tests {
         assert!(e(4096, 6, Method::Exact) > e(4096, 6, Method::Naive));
         assert!(e(4096, 6, Method::Naive) > e(4096, 6, Method::Compensated));
         assert!(e(4096, 2, Method::Compensated) > e(4096, 2, Method::Fast));
+        // The fast method: N log2 N, so 4096 points cost 2 × 12/11 of 2048.
+        let ratio = e(4096, 2, Method::Fast) / e(2048, 2, Method::Fast);
+        assert!((ratio - 24.0 / 11.0).abs() < 1e-9, "{ratio}");
         // 16,384 points in 6 dimensions took 16 s (l2star) and 29 s (cd) exactly here.
         let words = vec![0u64; 16_384 * 6];
         let p = Points {
