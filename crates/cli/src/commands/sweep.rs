@@ -346,15 +346,20 @@ fn piece_records(records: &[PieceRecord], complete: bool) -> serde_json::Value {
         .collect()
 }
 
+impl SweepParameters {
+    /// Whether `r` is a piece of this sweep: one of its implementations, in its dimensions.
+    fn holds(&self, r: &PieceRecord) -> bool {
+        self.implementations.contains(&r.implementation)
+            && (self.dims.first..=self.dims.last).contains(&r.piece.dim)
+    }
+}
+
 /// Combines the pieces of every implementation and dimension; a missing one is refused.
 fn verdicts(
     parameters: &SweepParameters,
     records: &[PieceRecord],
 ) -> Result<Vec<ImplementationVerdict>, CliError> {
-    if let Some(r) = records.iter().find(|r| {
-        !parameters.implementations.contains(&r.implementation)
-            || !(parameters.dims.first..=parameters.dims.last).contains(&r.piece.dim)
-    }) {
+    if let Some(r) = records.iter().find(|r| !parameters.holds(r)) {
         return Err(CliError::Usage(format!(
             "a piece of {} dimension {} is not part of this sweep ({}, {})",
             r.implementation,
@@ -543,10 +548,7 @@ pub fn audit(cert: &Certificate) -> Result<String, CliError> {
     } else {
         let pieces: Vec<PieceRecord> = serde_json::from_value(cert.result["pieces"].clone())
             .map_err(|e| field("result.pieces", e.to_string()))?;
-        if let Some((k, r)) = pieces.iter().enumerate().find(|(_, r)| {
-            !params.implementations.contains(&r.implementation)
-                || !(params.dims.first..=params.dims.last).contains(&r.piece.dim)
-        }) {
+        if let Some((k, r)) = pieces.iter().enumerate().find(|(_, r)| !params.holds(r)) {
             return Err(field(
                 &format!("result.pieces[{k}]"),
                 format!(
