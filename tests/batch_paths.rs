@@ -5,6 +5,7 @@
 //! inside and outside the ART's cached root range. Every ART batch kernel (portable and
 //! SIMD) against the scalar path is tested in `crates/art/tests/batch.rs`.
 
+use gartowen::core::ScramblerExt;
 use gartowen::core::{BuildContext, PowerOfTwoBase, Scrambler, SplitMix64, Width};
 
 /// Every registry entry, plus options that change the code path taken.

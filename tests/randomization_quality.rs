@@ -9,6 +9,7 @@
 //! for uniform S_b, b ≥ 8: it exposes GL(q,2)-based ψ that the pair law cannot (AGL(q,2) is
 //! 2-transitive). The table is written to the test's target directory and printed.
 
+use gartowen::core::ScramblerExt;
 use gartowen::core::{BuildContext, DigitLayout, Permutation, PowerOfTwoBase, Scrambler, Width};
 use gartowen::oracles::inspector::NodeLaw;
 use statrs::distribution::{ChiSquared, ContinuousCDF};

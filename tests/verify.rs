@@ -4,6 +4,7 @@
 //! judged: the ART family claims marginal laws only, so its joint laws are measured.
 
 use gartowen::core::registry::BuildContext;
+use gartowen::core::Unscramble;
 use gartowen::core::{
     mix64, Claim, CoreError, DigitLayout, PowerOfTwoBase, Registry, Scrambler, ScramblerRequest,
     ScramblerSpec, Width,
@@ -26,8 +27,17 @@ impl Scrambler for FalseClaim {
     fn scramble(&self, x: u64, w: Width, d: u32) -> u64 {
         self.0.scramble(x, w, d)
     }
+    fn inverse(&self) -> Option<&dyn Unscramble> {
+        Some(self)
+    }
+}
+
+impl Unscramble for FalseClaim {
     fn unscramble(&self, y: u64, w: Width, d: u32) -> u64 {
-        self.0.unscramble(y, w, d)
+        self.0
+            .inverse()
+            .expect("the wrapped entry inverts")
+            .unscramble(y, w, d)
     }
 }
 
@@ -46,6 +56,12 @@ impl Scrambler for NonNested {
     fn scramble(&self, x: u64, w: Width, _d: u32) -> u64 {
         (x ^ (self.0 & w.mask())).wrapping_mul(0x9E37_79B9_7F4A_7C15 | 1) & w.mask()
     }
+    fn inverse(&self) -> Option<&dyn Unscramble> {
+        Some(self)
+    }
+}
+
+impl Unscramble for NonNested {
     fn unscramble(&self, y: u64, w: Width, _d: u32) -> u64 {
         // Multiplicative inverse of the odd multiplier mod 2^64, then undo the xor.
         let mut inv: u64 = 1;
@@ -80,6 +96,12 @@ impl Scrambler for OffByOne {
             )
         })
     }
+    fn inverse(&self) -> Option<&dyn Unscramble> {
+        Some(self)
+    }
+}
+
+impl Unscramble for OffByOne {
     fn unscramble(&self, y: u64, _w: Width, _d: u32) -> u64 {
         y // not invertible in general; the inverse check reports it too
     }

@@ -3,6 +3,7 @@
 //! takes them, certifies all 2^32 words of a dimension, and catches a swap of two deep 32-bit
 //! words that the sampled battery cannot see.
 
+use gartowen::core::Unscramble;
 use gartowen::core::{Claim, PowerOfTwoBase, Scrambler, Width};
 use gartowen::oracles::inspector::inspect_exhaustive;
 use gartowen::verify::{check_candidate, Candidate, Level, Verdict};
@@ -40,8 +41,18 @@ impl Scrambler for Rewired<'_> {
             .map_or(x, |&(_, to)| to);
         self.inner.scramble(x, width, dim)
     }
+    fn inverse(&self) -> Option<&dyn Unscramble> {
+        Some(self)
+    }
+}
+
+impl Unscramble for Rewired<'_> {
     fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
-        let x = self.inner.unscramble(y, width, dim);
+        let x = self
+            .inner
+            .inverse()
+            .expect("the wrapped entry inverts")
+            .unscramble(y, width, dim);
         self.rewire
             .iter()
             .find(|(_, to)| *to == x)

@@ -28,6 +28,7 @@
 //! The keying is frozen by the golden vectors in `oracles/tests/golden.rs`.
 
 use crate::node_draw::{node_image, node_permutation};
+use gartowen_core::Unscramble;
 use gartowen_core::{
     hash_words, mix64, word_to_f32, word_to_f64, DigitLayout, Permutation, PowerOfTwoBase,
     Scrambler, SplitMix64, Width,
@@ -387,14 +388,6 @@ impl Scrambler for FullTreeOwen {
         self.run(x, width, dim, false, digits)
     }
 
-    fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
-        if self.base.q() == 1 {
-            return binary_unrun(y, width.bits(), root_key(self.dim_key(dim)));
-        }
-        let digits = DigitLayout::new(width, self.base).num_digits();
-        self.run(y, width, dim, true, digits)
-    }
-
     /// The dimension key hashed once per batch, then each word as [`Scrambler::scramble`].
     fn scramble_batch(&self, xs: &mut [u64], width: Width, dim: u32) {
         let root = root_key(self.dim_key(dim));
@@ -418,6 +411,19 @@ impl Scrambler for FullTreeOwen {
     fn scramble_f64(&self, x: u64, width: Width, dim: u32) -> f64 {
         let digits = self.digits_for_bits(width, 53);
         word_to_f64(self.run(x, width, dim, false, digits), width)
+    }
+    fn inverse(&self) -> Option<&dyn Unscramble> {
+        Some(self)
+    }
+}
+
+impl Unscramble for FullTreeOwen {
+    fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
+        if self.base.q() == 1 {
+            return binary_unrun(y, width.bits(), root_key(self.dim_key(dim)));
+        }
+        let digits = DigitLayout::new(width, self.base).num_digits();
+        self.run(y, width, dim, true, digits)
     }
 }
 

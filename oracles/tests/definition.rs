@@ -3,6 +3,7 @@
 //! every base 2..256, every node law, 16-, 32- and 64-bit words, word by word, by batch, by
 //! float and node by node.
 
+use gartowen_core::Unscramble;
 use gartowen_core::{PowerOfTwoBase, Scrambler, SplitMix64, Width};
 use gartowen_oracles::owen_definition;
 use gartowen_oracles::{FullTreeOwen, OwenVariant};

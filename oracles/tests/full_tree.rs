@@ -1,5 +1,6 @@
 //! FullTreeOwen: bijective, nested, invertible, keyed as documented; the inspector sees it.
 
+use gartowen_core::Unscramble;
 use gartowen_core::{mix64, DigitLayout, PowerOfTwoBase, Scrambler, Width};
 use gartowen_oracles::inspector::{inspect_exhaustive, inspect_probes, ViolationKind};
 use gartowen_oracles::{FullTreeOwen, OwenVariant};

@@ -4,6 +4,7 @@
 //! key, Fisher–Yates indices from one word for b ≤ 16); in base 2 the four laws coincide on
 //! S_2 and so do their vectors.
 
+use gartowen_core::Unscramble;
 use gartowen_core::{PowerOfTwoBase, Scrambler, Width};
 use gartowen_oracles::{FullTreeOwen, OwenVariant};
 

@@ -338,7 +338,6 @@ fn verify(
             Candidate::from_builder(format!("python:{name}"), claim_value, Box::new(build))?;
         // The structural checks use the caller's seed; the laws use seeds 0, 1, 2, ….
         candidate.probe = (candidate.with_seed)(seed)?;
-        candidate.invertible = false;
         candidate.health = Box::new(move || watched.failed());
         candidate.twin = expect.as_deref().map(|twin| {
             (

@@ -6,7 +6,7 @@
 //! range) is kept; later batches return zeros without calling Python, the battery's health
 //! check marks the checks after it, and `verify` re-raises the exception.
 
-use gartowen::core::{invert_nested, Claim, PowerOfTwoBase, Scrambler, Width};
+use gartowen::core::{Claim, PowerOfTwoBase, Scrambler, Width};
 use numpy::{
     dtype, PyArray1, PyArrayDescrMethods, PyArrayMethods, PyUntypedArray, PyUntypedArrayMethods,
 };
@@ -189,10 +189,5 @@ impl Scrambler for PythonScrambler {
     }
     fn scramble_batch(&self, words: &mut [u64], _width: Width, dim: u32) {
         self.function.call(words, dim, self.seed);
-    }
-    /// No inverse is given: this search inverts a nested scramble digit by digit (the battery
-    /// checks injectivity instead).
-    fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
-        invert_nested(&|x| self.scramble(x, width, dim), y, width, self.base)
     }
 }

@@ -5,6 +5,7 @@
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use gartowen_art::peers::{LkFlavor, LkHash, PerBitOwen};
 use gartowen_art::{ArtMutant, ArtOwen, ArtVariant};
+use gartowen_core::ScramblerExt;
 use gartowen_core::{Identity, PowerOfTwoBase, Scrambler, SplitMix64};
 use gartowen_oracles::{FullTreeOwen, OwenVariant};
 

@@ -23,6 +23,7 @@
 use crate::dims::dimension_key;
 use crate::record::ArtRecord;
 use crate::ArtVariant;
+use gartowen_core::Unscramble;
 use gartowen_core::{Claim, DigitLayout, Gf2Matrix, PowerOfTwoBase, Scrambler, Width};
 
 /// Q-ART with composed linear parts, from the Q-ART record of 64-bit words.
@@ -115,12 +116,17 @@ impl Scrambler for QArtComposed {
         self.run(x, width, dim, false)
     }
 
-    fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
-        self.run(y, width, dim, true)
-    }
-
     /// The record (64-bit words) and the 6-entry matrix pairs per symbol, in bytes.
     fn table_bytes(&self) -> usize {
         self.record.bytes() + self.matrices.len() * 2 * std::mem::size_of::<Gf2Matrix>()
+    }
+    fn inverse(&self) -> Option<&dyn Unscramble> {
+        Some(self)
+    }
+}
+
+impl Unscramble for QArtComposed {
+    fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
+        self.run(y, width, dim, true)
     }
 }

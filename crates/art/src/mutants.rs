@@ -7,6 +7,7 @@ use crate::dims::{root_symbol, DimKey};
 use crate::engine::{ArtOwen, ArtTables};
 use crate::grammar::GrammarError;
 use crate::ArtVariant;
+use gartowen_core::Unscramble;
 use gartowen_core::{Claim, PowerOfTwoBase, Scrambler, Width};
 
 /// A defect of the tables.
@@ -103,7 +104,12 @@ impl Scrambler for TailUntranslated {
         let tail = self.tail(width);
         (self.0.scramble(x, width, dim) & !tail) | (x & tail)
     }
+    fn inverse(&self) -> Option<&dyn Unscramble> {
+        Some(self)
+    }
+}
 
+impl Unscramble for TailUntranslated {
     fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
         let tail = self.tail(width);
         (self.0.unscramble(y, width, dim) & !tail) | (y & tail)

@@ -7,6 +7,7 @@
 //! permutations are not independent uniform flips. They act on 32-bit words (the constants are
 //! 32-bit); the per-bit Owen scramble works at any width.
 
+use gartowen_core::Unscramble;
 use gartowen_core::{hash_words, mix64, Claim, NodeGroup, PowerOfTwoBase, Scrambler, Width};
 
 /// Laine–Karras style permutation of a bit-reversed 32-bit word (the classic constants).
@@ -134,11 +135,7 @@ impl Scrambler for LkHash {
     }
     #[inline]
     fn scramble(&self, x: u64, _width: Width, dim: u32) -> u64 {
-        self.scramble_u32(x as u32, dim) as u64
-    }
-    #[inline]
-    fn scramble_u32(&self, x: u32, dim: u32) -> u32 {
-        Self::apply(self.flavor, x, self.dim_seed(dim))
+        Self::apply(self.flavor, x as u32, self.dim_seed(dim)) as u64
     }
     /// The dimension's seed drawn once, then a vectorizable loop over the words.
     fn scramble_batch(&self, words: &mut [u64], _width: Width, dim: u32) {
@@ -147,6 +144,12 @@ impl Scrambler for LkHash {
     fn scramble_batch_u32(&self, words: &mut [u32], dim: u32) {
         lk_batch32(words, self.flavor, self.dim_seed(dim))
     }
+    fn inverse(&self) -> Option<&dyn Unscramble> {
+        Some(self)
+    }
+}
+
+impl Unscramble for LkHash {
     fn unscramble(&self, y: u64, _width: Width, dim: u32) -> u64 {
         // The hash is a bijection that is triangular in reversed bits: recover input bits from
         // the lowest reversed bit up, each fixed by the bits below it.
@@ -229,10 +232,6 @@ impl Scrambler for PerBitOwen {
         let key = hash_words(&[self.seed, dim as u64]);
         apply_bit_flips(x, width, |k, prefix| Self::flip(key, k, prefix))
     }
-    fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
-        let key = hash_words(&[self.seed, dim as u64]);
-        invert_bit_flips(y, width, |k, prefix| Self::flip(key, k, prefix))
-    }
     /// Eight words at a time, bit by bit across the lanes: the 64-bit multiplies vectorize
     /// (AVX-512DQ where the CPU has it), the same bits either way.
     fn scramble_batch(&self, words: &mut [u64], width: Width, dim: u32) {
@@ -247,6 +246,16 @@ impl Scrambler for PerBitOwen {
             return unsafe { wide(words, width, key) };
         }
         per_bit_chunks(words, width, key)
+    }
+    fn inverse(&self) -> Option<&dyn Unscramble> {
+        Some(self)
+    }
+}
+
+impl Unscramble for PerBitOwen {
+    fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
+        let key = hash_words(&[self.seed, dim as u64]);
+        invert_bit_flips(y, width, |k, prefix| Self::flip(key, k, prefix))
     }
 }
 
@@ -311,6 +320,12 @@ impl Scrambler for DigitalShift {
     fn scramble(&self, x: u64, width: Width, dim: u32) -> u64 {
         x ^ self.shift(width, dim)
     }
+    fn inverse(&self) -> Option<&dyn Unscramble> {
+        Some(self)
+    }
+}
+
+impl Unscramble for DigitalShift {
     fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
         y ^ self.shift(width, dim)
     }
@@ -356,6 +371,12 @@ impl Scrambler for LinearMatrixScramble {
     fn scramble(&self, x: u64, width: Width, dim: u32) -> u64 {
         apply_bit_flips(x, width, |k, prefix| self.flip(dim, k, prefix))
     }
+    fn inverse(&self) -> Option<&dyn Unscramble> {
+        Some(self)
+    }
+}
+
+impl Unscramble for LinearMatrixScramble {
     fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
         invert_bit_flips(y, width, |k, prefix| self.flip(dim, k, prefix))
     }

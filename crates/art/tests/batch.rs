@@ -6,6 +6,7 @@
 
 use gartowen_art::peers::{LkFlavor, LkHash, PerBitOwen};
 use gartowen_art::{ArtMutant, ArtOwen, ArtVariant, BatchKernel};
+use gartowen_core::ScramblerExt;
 use gartowen_core::{Scrambler, SplitMix64, Width};
 
 fn words(seed: u64, len: usize) -> Vec<u64> {

@@ -2,6 +2,7 @@
 //! 0 and different below, and reachable from the registry.
 
 use gartowen_art::{ArtOwen, ArtVariant, QArtComposed};
+use gartowen_core::Unscramble;
 use gartowen_core::{DigitLayout, PowerOfTwoBase, Scrambler, SplitMix64, Width};
 
 #[test]

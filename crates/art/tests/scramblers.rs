@@ -4,6 +4,7 @@
 
 use gartowen_art::peers::{LkFlavor, LkHash, PerBitOwen};
 use gartowen_art::{ArtOwen, ArtVariant};
+use gartowen_core::Unscramble;
 use gartowen_core::{mix64, PowerOfTwoBase, Scrambler, Width};
 use gartowen_oracles::inspector::{inspect_exhaustive, inspect_probes};
 use gartowen_oracles::scramble_with_nodes;
@@ -137,7 +138,7 @@ fn imitation_peers_are_nested_with_translation_nodes_of_the_stated_structure() {
     let w16 = Width::new(16).unwrap();
     let shift = DigitalShift::new(3);
     let lms = LinearMatrixScramble::new(3);
-    for s in [&shift as &dyn Scrambler, &lms] {
+    for s in [&shift as &dyn Unscramble, &lms] {
         let f = |x: u64| s.scramble(x, w16, 2);
         assert!(inspect_exhaustive(&f, w16, PowerOfTwoBase::B2, 16).nested_scramble);
         for i in 0..1000u64 {

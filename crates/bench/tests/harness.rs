@@ -5,6 +5,7 @@
 //! standard error is about 0.05; the thresholds separate the predicted rates (−0.5, −1, −1.5)
 //! by at least 4 standard errors, so the false-alarm rate is below 1e-4 per assertion.
 
+use gartowen::core::Unscramble;
 use gartowen::core::{
     hash_words, BuildContext, CoreError, PowerOfTwoBase, Registry, Scrambler, ScramblerRequest,
     ScramblerSpec, Width,
@@ -38,6 +39,12 @@ impl Scrambler for WholeWordHash {
         h = h.wrapping_mul(0xC2B2_AE35);
         (h ^ (h >> 16)) as u64
     }
+    fn inverse(&self) -> Option<&dyn Unscramble> {
+        Some(self)
+    }
+}
+
+impl Unscramble for WholeWordHash {
     fn unscramble(&self, y: u64, _width: Width, dim: u32) -> u64 {
         // Each step undone in reverse: x ^= x >> 16 is an involution on 32 bits, x ^= x >> 13
         // is undone by x ^ (x >> 13) ^ (x >> 26), and the multipliers by their inverses mod 2^32.
@@ -212,6 +219,12 @@ fn scramblers_without_32_bit_words_are_refused() {
             fn scramble(&self, x: u64, _: Width, _: u32) -> u64 {
                 x
             }
+            fn inverse(&self) -> Option<&dyn Unscramble> {
+                Some(self)
+            }
+        }
+
+        impl Unscramble for Wide {
             fn unscramble(&self, y: u64, _: Width, _: u32) -> u64 {
                 y
             }

@@ -27,5 +27,7 @@ pub use hash::{derive_seed, hash_words, mix64, SplitMix64};
 pub use names::UnknownName;
 pub use perm::{fisher_yates, Permutation};
 pub use registry::{BuildContext, Registry, ScramblerRequest, ScramblerSpec};
-pub use scrambler::{invert_nested, Identity, Scrambler, U32_BATCH_CHUNK};
+pub use scrambler::{
+    invert_nested, Identity, Scrambler, ScramblerExt, Unscramble, U32_BATCH_CHUNK,
+};
 pub use width::Width;

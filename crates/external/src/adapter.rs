@@ -70,14 +70,4 @@ impl Scrambler for ExternalScrambler {
             }
         }
     }
-    /// The protocol has no inverse; verify checks injectivity instead. This search inverts a
-    /// nested scramble digit by digit (b requests per digit) and is only right for nested ones.
-    fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
-        gartowen_core::invert_nested(
-            &|x| self.scramble(x, width, dim),
-            y,
-            width,
-            self.process.base(),
-        )
-    }
 }

@@ -95,7 +95,4 @@ impl Scrambler for ExternalPool {
     fn scramble_batch_u32(&self, words: &mut [u32], dim: u32) {
         self.with_member(|m| m.scramble_batch_u32(words, dim))
     }
-    fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
-        self.with_member(|m| m.unscramble(y, width, dim))
-    }
 }

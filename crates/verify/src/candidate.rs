@@ -14,9 +14,6 @@ pub struct Candidate<'a> {
     pub probe: Box<dyn Scrambler + 'a>,
     /// Instances for other seeds (the node law draws thousands).
     pub with_seed: Box<SeedBuilder<'a>>,
-    /// Whether `unscramble` is a real inverse (false for external programs: the battery then
-    /// checks injectivity instead).
-    pub invertible: bool,
     /// A failure of the transport, checked after every check (external programs).
     pub health: Box<dyn Fn() -> Option<String> + 'a>,
     /// A built-in twin the implementation must agree with bit for bit (`--expect`).
@@ -26,7 +23,7 @@ pub struct Candidate<'a> {
 }
 
 impl<'a> Candidate<'a> {
-    /// An invertible in-process candidate judged on `claim`, with instances from `with_seed`
+    /// An in-process candidate judged on `claim`, with instances from `with_seed`
     /// (the probe is seed 0's instance).
     pub fn from_builder(
         name: impl Into<String>,
@@ -38,7 +35,6 @@ impl<'a> Candidate<'a> {
             name: name.into(),
             probe: with_seed(0)?,
             with_seed,
-            invertible: true,
             health: Box::new(|| None),
             twin: None,
             claim,
@@ -79,7 +75,6 @@ pub fn registry_candidate<'a>(
         claim: probe.claim(),
         probe,
         with_seed: registry_seeds(registry, request, base),
-        invertible: true,
         health: Box::new(|| None),
         twin: None,
     })
@@ -118,7 +113,6 @@ pub fn external_candidate<'a>(
         with_seed: Box::new(move |s| {
             Ok(Box::new(ExternalScrambler::new(for_seed.clone(), s, claim)))
         }),
-        invertible: false,
         health: Box::new(move || watched.failure().map(|e| e.to_string())),
         twin: twin.map(|(registry, request)| {
             (request.to_string(), registry_seeds(registry, request, base))

@@ -48,6 +48,7 @@ const GROUPS: usize = 6;
 use crate::dims::{dimension_key, DimKey};
 use crate::record::ArtRecord;
 use crate::{ArtVariant, Grammar};
+use gartowen_core::Unscramble;
 use gartowen_core::{DigitLayout, Permutation, PowerOfTwoBase, Scrambler, Width};
 
 /// Precomputed effect of `digits` consecutive digits (one step) from a symbol.
@@ -525,10 +526,6 @@ impl Scrambler for ArtOwen {
         self.run(x, width, dim, false)
     }
 
-    fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
-        self.run(y, width, dim, true)
-    }
-
     /// Everything held, in bytes: child table, codes, ψ and ψ^{-1} images, the scalar step
     /// tables, the batch table and the narrow table with the codes' top halves.
     fn table_bytes(&self) -> usize {
@@ -547,5 +544,14 @@ impl Scrambler for ArtOwen {
     /// Interleaved chains through the step table (bit-identical to [`Scrambler::scramble`]).
     fn scramble_batch(&self, words: &mut [u64], width: Width, dim: u32) {
         self.forward_batch(words, width, dim)
+    }
+    fn inverse(&self) -> Option<&dyn Unscramble> {
+        Some(self)
+    }
+}
+
+impl Unscramble for ArtOwen {
+    fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
+        self.run(y, width, dim, true)
     }
 }

@@ -190,7 +190,6 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
             // A closure borrowing the builder for this block only (the laws below take it).
             #[allow(clippy::redundant_closure)]
             with_seed: Box::new(|seed| with_seed(seed)),
-            invertible: false,
             health: Box::new(|| None),
             twin: None,
             claim: s.claim(),
@@ -240,7 +239,6 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
             name,
             probe,
             with_seed,
-            invertible: process.is_none(),
             health: Box::new(|| None),
             twin: None,
             claim,

@@ -27,9 +27,6 @@ impl<F: Fn(u64, u32) -> u64 + Send + Sync> Scrambler for Mapped<F> {
     fn scramble(&self, x: u64, _width: Width, dim: u32) -> u64 {
         (self.f)(x, dim)
     }
-    fn unscramble(&self, _y: u64, _width: Width, _dim: u32) -> u64 {
-        unimplemented!("the sweep never inverts")
-    }
 }
 
 fn w(bits: u32) -> Width {
@@ -554,6 +551,12 @@ fn widths_below_32_use_the_wide_batch_path_and_32_the_narrow_one() {
                 }
             }
         }
+        fn inverse(&self) -> Option<&dyn gartowen_core::Unscramble> {
+            Some(self)
+        }
+    }
+
+    impl gartowen_core::Unscramble for Paths {
         fn unscramble(&self, y: u64, _: Width, _: u32) -> u64 {
             y
         }
