@@ -183,24 +183,8 @@ impl ProjectionResult {
 }
 
 /// Progress of a long check: `start` before each projection with the number of units, then
-/// `advance` by units done.
-pub trait Progress: Sync {
-    /// A projection begins with `total` units (0 when unknown) of kind `what`.
-    fn start(&self, total: u64, what: &str);
-    /// `k` more units are done.
-    fn advance(&self, k: u64);
-    /// The projection is done.
-    fn finish(&self);
-}
-
-/// No progress display.
-pub struct Silent;
-
-impl Progress for Silent {
-    fn start(&self, _total: u64, _what: &str) {}
-    fn advance(&self, _k: u64) {}
-    fn finish(&self) {}
-}
+/// `advance` by units done, `finish` after it (the workspace's one progress shape).
+pub use gartowen_core::{Progress, Silent};
 
 /// One failing box in words: its shape and the sides of the refined dimensions.
 pub fn describe_failure(f: &BoxFailure, base: u64) -> String {
@@ -341,8 +325,7 @@ pub fn check_points_owned(
     let dims: Vec<usize> = (0..points.dims()).collect();
     let total = gartowen_netcheck::shapes::shape_count(m.saturating_sub(t), dims.len()) as u64;
     progress.start(total, "shapes");
-    let r =
-        check_net_owned(points, base, m, t, &|k| progress.advance(k)).map_err(|e| e.to_string())?;
+    let r = check_net_owned(points, base, m, t, progress).map_err(|e| e.to_string())?;
     progress.finish();
     let holds = r.holds;
     let result = net_verdict(&dims, r, base.get());
@@ -427,8 +410,7 @@ fn nets(
                 let total =
                     gartowen_netcheck::shapes::shape_count(m.saturating_sub(t), set.dims()) as u64;
                 progress.start(total, "shapes");
-                let r = check_net_with_progress(set, base, m, t, &|k| progress.advance(k))
-                    .map_err(err)?;
+                let r = check_net_with_progress(set, base, m, t, progress).map_err(err)?;
                 progress.finish();
                 holds &= r.holds;
                 let mut result = net_verdict(dims, r, b);
@@ -493,8 +475,7 @@ fn sequences(
         let (t, r) = match q.t {
             Some(t) => {
                 progress.start(0, "block-shapes");
-                let r = check_sequence_with_progress(set, base, t, max_m, &|k| progress.advance(k))
-                    .map_err(err)?;
+                let r = check_sequence_with_progress(set, base, t, max_m, progress).map_err(err)?;
                 progress.finish();
                 (t, r)
             }

@@ -6,6 +6,7 @@ mod error;
 mod input;
 mod output;
 mod paths;
+mod progress;
 
 use clap::{Parser, Subcommand};
 use error::CliError;

@@ -88,8 +88,6 @@ pub struct SequenceReport {
 
 pub use crate::Progress;
 
-fn no_progress(_: u64) {}
-
 /// Digit prefixes floor(x·b^K) of points `range` in every dimension.
 /// Values are below b^k ≤ N ≤ 2^32, so they fit u32 (validated by the callers).
 fn prefixes(
@@ -156,7 +154,7 @@ pub fn check_net(
     m: u32,
     t: u32,
 ) -> Result<NetReport, NetError> {
-    check_net_with_progress(points, base, m, t, &no_progress)
+    check_net_with_progress(points, base, m, t, &gartowen_core::Silent)
 }
 
 /// [`check_net`] with a progress callback (called with the number of shapes finished).
@@ -369,7 +367,7 @@ pub fn t_value(points: &PointSet, base: CheckBase, m: u32) -> Result<u32, NetErr
             base,
             m,
             t,
-            &no_progress,
+            &gartowen_core::Silent,
             Search::Any,
         )?
         .holds
@@ -443,7 +441,7 @@ pub fn check_sequence(
     t: u32,
     max_m: u32,
 ) -> Result<SequenceReport, NetError> {
-    check_sequence_with_progress(points, base, t, max_m, &no_progress)
+    check_sequence_with_progress(points, base, t, max_m, &gartowen_core::Silent)
 }
 
 /// [`check_sequence`] with a progress callback (units: block-shapes finished).
@@ -504,7 +502,7 @@ pub fn check_sequence_with_progress(
                             scratch,
                         )
                     });
-                    progress(shape_list.len() as u64);
+                    progress.advance(shape_list.len() as u64);
                     found.map(|f| (block, f))
                 })
                 .find_first(|r| r.is_some())

@@ -22,8 +22,8 @@ mod shape_tree;
 pub mod shapes;
 pub mod snap;
 
-/// Reports progress in units of shapes checked; called from many threads.
-pub type Progress<'a> = &'a (dyn Fn(u64) + Sync);
+/// Progress of a check, in units of shapes checked; called from many threads.
+pub type Progress<'a> = &'a dyn gartowen_core::Progress;
 
 pub use base::CheckBase;
 pub use counting::{BoxFailure, NetReport, SequenceFailure, SequenceReport, ShapeHistogram};

@@ -25,7 +25,7 @@ pub use crate::structure::{
 pub use crate::verdict::{CheckResult, ImplReport, Verdict};
 
 use crate::law_runner::run_laws;
-use gartowen_core::{Claim, CoreError, Registry};
+use gartowen_core::{Claim, CoreError, Progress, Registry, Silent};
 use std::time::Instant;
 
 /// Which part of the list to run: shard `index` (1-based) of `count`; implementation k goes to
@@ -189,18 +189,19 @@ pub fn verify(
     names: &[String],
     level: Level,
 ) -> Result<Vec<ImplReport>, CoreError> {
-    verify_shard(registry, names, level, Shard::ALL, None, &|_| {})
+    verify_shard(registry, names, level, Shard::ALL, None, &Silent)
 }
 
 /// [`verify`] restricted to one shard, judging every implementation on `claim` when given
-/// (else on its own claim), calling `progress` after each implementation.
+/// (else on its own claim). `progress` starts with the shard's number of implementations and
+/// advances by one after each, its message the implementation's name.
 pub fn verify_shard(
     registry: &Registry,
     names: &[String],
     level: Level,
     shard: Shard,
     claim: Option<Claim>,
-    progress: &dyn Fn(&str),
+    progress: &dyn Progress,
 ) -> Result<Vec<ImplReport>, CoreError> {
     let names = names_or_all(registry, names);
     let judged = names
@@ -208,6 +209,8 @@ pub fn verify_shard(
         .filter_map(|n| registry.build(n, 0).ok())
         .filter(|s| claim.unwrap_or_else(|| s.claim()).marginal.is_some())
         .count();
+    let mine = (0..names.len()).filter(|k| shard.contains(*k)).count();
+    progress.start(mine as u64, "implementations");
     let mut out = Vec::new();
     for (index, name) in names.iter().enumerate().filter(|(k, _)| shard.contains(*k)) {
         let mut candidate = registry_candidate(registry, name, index)?;
@@ -215,7 +218,9 @@ pub fn verify_shard(
             candidate.claim = c;
         }
         out.push(check_candidate(&candidate, level, judged));
-        progress(name);
+        progress.message(name);
+        progress.advance(1);
     }
+    progress.finish();
     Ok(out)
 }

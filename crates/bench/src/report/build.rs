@@ -1,6 +1,7 @@
 //! Running the report's measurements: the harness, speeds, quality, curves, variance ratios, scenes.
 
 use super::*;
+use gartowen::core::{Progress, Silent};
 
 /// The randomization-quality table from the verify battery at quick level, one row per
 /// request (the same requests as the speed table).
@@ -95,11 +96,13 @@ fn quick_methods(all: Vec<Method>) -> Vec<Method> {
         .collect()
 }
 
-/// Runs everything; `progress(done, total, what)` is called as parts finish.
+/// Runs everything. `progress` starts with the number of parts (one per method, then speed,
+/// randomization quality, discrepancy curves and the rest); its message names the part
+/// running, and it advances as each finishes.
 pub fn build_report(
     registry: &Registry,
     config: &ReportConfig,
-    progress: &dyn Fn(usize, usize, &str),
+    progress: &dyn Progress,
 ) -> Result<Report, ReportError> {
     let start = Instant::now();
     let families = standard_families(4);
@@ -108,19 +111,24 @@ pub fn build_report(
     if config.quick {
         methods = quick_methods(methods);
     }
-    let total = methods.len() + 4;
+    progress.start(methods.len() as u64 + 4, "parts");
     let mut results = Vec::with_capacity(methods.len());
-    for (k, m) in methods.iter().enumerate() {
+    for m in &methods {
+        progress.message(&m.label());
         results.push(run_method(registry, m, &families, &harness).map_err(ReportError::Harness)?);
-        progress(k + 1, total, &m.label());
+        progress.advance(1);
     }
+    progress.message("speed");
     let speed = measure_speed(registry, config.quick);
-    progress(methods.len() + 1, total, "speed");
+    progress.advance(1);
+    progress.message("randomization quality");
     let requests: Vec<String> = speed.iter().map(|s| s.scrambler.clone()).collect();
     let quality = measure_quality(registry, &requests);
-    progress(methods.len() + 2, total, "randomization quality");
+    progress.advance(1);
+    progress.message("discrepancy curves");
     let discrepancy = discrepancy_curves(registry, config.quick);
-    progress(methods.len() + 3, total, "discrepancy curves");
+    progress.advance(1);
+    progress.message("Owen variance, trade-off, scenes");
     let mut with_base: Vec<(String, u32)> = speed
         .iter()
         .map(|s| (s.scrambler.clone(), s.base))
@@ -151,10 +159,11 @@ pub fn build_report(
             seed: config.seed,
             margin: config.margin,
         },
-        &|_, _, _| {},
+        &Silent,
     )
     .map_err(|e| ReportError::Harness(HarnessError::Method(e)))?;
-    progress(total, total, "scenes");
+    progress.advance(1);
+    progress.finish();
     Ok(Report {
         schema: REPORT_SCHEMA.into(),
         schema_version: REPORT_VERSION,

@@ -4,6 +4,7 @@
 use super::layout::candidate_layouts;
 use super::measure::{extremes, measure_scene, SceneConfig, SceneMethod, SceneResult};
 use super::{Layout, Scene};
+use gartowen::core::Progress;
 use serde::{Deserialize, Serialize};
 use statrs::distribution::{ContinuousCDF, Normal};
 use std::fmt::Write as _;
@@ -147,15 +148,14 @@ fn layouts_for(scene: &dyn Scene, plan: &ScenePlan) -> Vec<Layout> {
     candidate_layouts(scene.slots(), scattered, plan.seed)
 }
 
-/// Runs the plan; `progress(done, total, what)` after each scene × method.
-pub fn run_scenes(
-    plan: &ScenePlan,
-    progress: &dyn Fn(usize, usize, &str),
-) -> Result<SceneReport, String> {
+/// Runs the plan. `progress` starts with the number of scene × method pairs, names each pair
+/// as it runs and advances as each finishes.
+pub fn run_scenes(plan: &ScenePlan, progress: &dyn Progress) -> Result<SceneReport, String> {
     let start = Instant::now();
     let (config, image_config) = configs(plan.quick, plan.seed);
     let total = plan.scenes.len() * plan.methods.len();
     let mut results = Vec::with_capacity(total);
+    progress.start(total as u64, "scene × method");
     for scene in &plan.scenes {
         let layouts = layouts_for(scene.as_ref(), plan);
         let c = if scene.pixels() > 1 {
@@ -164,14 +164,12 @@ pub fn run_scenes(
             &config
         };
         for m in &plan.methods {
+            progress.message(&format!("{} {}", scene.name(), m.label));
             results.push(measure_scene(scene.as_ref(), m, &layouts, c)?);
-            progress(
-                results.len(),
-                total,
-                &format!("{} {}", scene.name(), m.label),
-            );
+            progress.advance(1);
         }
     }
+    progress.finish();
     let scenes: Vec<SceneInfo> = plan
         .scenes
         .iter()

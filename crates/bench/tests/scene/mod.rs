@@ -3,7 +3,7 @@
 //! the harness deterministic and sensitive to a biased reference, and the verdict and
 //! baseline rules on synthetic results. One test binary; one file per concern.
 
-use gartowen::core::{derive_seed, SplitMix64};
+use gartowen::core::{derive_seed, Progress, Silent, SplitMix64};
 use gartowen_bench::scene::image::ImageScene;
 use gartowen_bench::scene::layout::{candidate_layouts, Relation};
 use gartowen_bench::scene::measure::{

@@ -42,7 +42,7 @@ fn the_baseline_gate_flags_growth_beyond_factor_and_noise_only() {
             seed: 1,
             margin: 0.1,
         },
-        &|_, _, _| {},
+        &Silent,
     )
     .unwrap();
     assert!(compare_scenes(&base, &base).is_empty());
@@ -93,14 +93,36 @@ fn the_scene_report_describes_its_scenes_and_judges_art_against_owen() {
         seed: 4,
         margin: 0.1,
     };
-    let calls = Mutex::new(Vec::new());
-    let report = run_scenes(&plan, &|done, total, _| {
-        calls.lock().unwrap().push((done, total))
-    })
-    .unwrap();
+    struct Recorder(Mutex<Vec<String>>);
+    impl Progress for Recorder {
+        fn start(&self, total: u64, _: &str) {
+            self.0.lock().unwrap().push(format!("start {total}"));
+        }
+        fn advance(&self, k: u64) {
+            self.0.lock().unwrap().push(format!("+{k}"));
+        }
+        fn message(&self, what: &str) {
+            self.0.lock().unwrap().push(what.to_string());
+        }
+        fn finish(&self) {
+            self.0.lock().unwrap().push("finish".into());
+        }
+    }
+    let calls = Recorder(Mutex::new(Vec::new()));
+    let report = run_scenes(&plan, &calls).unwrap();
+    let calls = calls.0.into_inner().unwrap();
+    // One start with every scene × method, each pair named before it runs and counted after.
+    assert_eq!(calls.len(), 2 + 2 * 6, "{calls:?}");
     assert_eq!(
-        calls.into_inner().unwrap(),
-        (1..=6).map(|d| (d, 6)).collect::<Vec<_>>()
+        (calls[0].as_str(), calls[13].as_str()),
+        ("start 6", "finish")
+    );
+    assert!(calls[1].starts_with("two-pixels "), "{calls:?}");
+    let named: std::collections::BTreeSet<&String> = calls[1..13].iter().step_by(2).collect();
+    assert_eq!(named.len(), 6, "every pair named once: {calls:?}");
+    assert!(
+        calls[2..13].iter().step_by(2).all(|c| c == "+1"),
+        "{calls:?}"
     );
     let (single, image) = configs(true, 4);
     let two = &report.scenes[0];
@@ -178,7 +200,7 @@ fn the_scene_report_describes_its_scenes_and_judges_art_against_owen() {
         seed: 4,
         margin: 0.1,
     };
-    let r = run_scenes(&plan, &|_, _, _| {}).unwrap();
+    let r = run_scenes(&plan, &Silent).unwrap();
     assert_eq!(r.results[0].layouts.len(), 1);
     assert_eq!(r.results[0].layouts[0].dims, vec![3, 9, 12]);
 
@@ -236,7 +258,7 @@ fn a_baseline_file_must_be_a_scene_report_of_this_version() {
             seed: 2,
             margin: 0.1,
         },
-        &|_, _, _| {},
+        &Silent,
     )
     .unwrap();
     let mut v = serde_json::to_value(&report).unwrap();
@@ -281,7 +303,7 @@ fn a_regression_is_named_by_its_own_scene_and_method() {
             seed: 3,
             margin: 0.1,
         },
-        &|_, _, _| {},
+        &Silent,
     )
     .unwrap();
     for r in &mut now.results {

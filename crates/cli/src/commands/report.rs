@@ -72,11 +72,6 @@ pub fn run(a: ReportArgs) -> Result<ExitCode, CliError> {
     std::fs::create_dir_all(&a.out)
         .map_err(|e| CliError::Io(format!("cannot create {}: {e}", a.out.display())))?;
     let registry = gartowen::registry();
-    let bar = indicatif::ProgressBar::new(1);
-    bar.set_style(
-        indicatif::ProgressStyle::with_template("report [{bar:30}] {pos}/{len} {msg}")
-            .expect("template"),
-    );
     let report = build_report(
         &registry,
         &ReportConfig {
@@ -84,14 +79,9 @@ pub fn run(a: ReportArgs) -> Result<ExitCode, CliError> {
             seed: a.seed,
             margin: a.margin,
         },
-        &|done, total, what| {
-            bar.set_length(total as u64);
-            bar.set_position(done as u64);
-            bar.set_message(what.to_string());
-        },
+        &crate::progress::Bar::new("report [{bar:30}] {pos}/{len} {msg}"),
     )
     .map_err(cli_error)?;
-    bar.finish_and_clear();
     if let (Some(b), Some(path)) = (&baseline, &a.baseline) {
         if gartowen_bench::report::comparable_rows(b, &report) == 0 {
             return Err(CliError::Usage(format!(

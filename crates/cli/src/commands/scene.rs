@@ -174,17 +174,10 @@ pub fn run(a: SceneArgs) -> Result<ExitCode, CliError> {
     // Every argument is checked; an unwritable --out fails now, not after the measurement.
     std::fs::create_dir_all(&a.out)
         .map_err(|e| CliError::Io(format!("cannot create {}: {e}", a.out.display())))?;
-    let bar = indicatif::ProgressBar::new(1);
-    bar.set_style(
-        indicatif::ProgressStyle::with_template("scene [{bar:30}] {pos}/{len} {msg}")
-            .expect("template"),
+    let report = run_scenes(
+        &plan,
+        &crate::progress::Bar::new("scene [{bar:30}] {pos}/{len} {msg}"),
     );
-    let report = run_scenes(&plan, &|done, total, what| {
-        bar.set_length(total as u64);
-        bar.set_position(done as u64);
-        bar.set_message(what.to_string());
-    });
-    bar.finish_and_clear();
     if let Some(e) = process.as_ref().and_then(|p| p.failure()) {
         return Err(CliError::External(e.to_string()));
     }

@@ -287,24 +287,9 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
             a.implementations.len()
         };
         shard_record = shard;
-        let bar = indicatif::ProgressBar::new(total.div_ceil(shard.count) as u64);
-        bar.set_style(
-            indicatif::ProgressStyle::with_template("verify {msg} [{bar:30}] {pos}/{len}")
-                .expect("template"),
-        );
+        let bar = crate::progress::Bar::new("verify {msg} [{bar:30}] {pos}/{len}");
         let claim = super::parse_claim(&a.claim)?;
-        let reports = verify_shard(
-            &registry,
-            &a.implementations,
-            level,
-            shard,
-            claim,
-            &|name| {
-                bar.set_message(name.to_string());
-                bar.inc(1);
-            },
-        )?;
-        bar.finish_and_clear();
+        let reports = verify_shard(&registry, &a.implementations, level, shard, claim, &bar)?;
         let mut reports = reports;
         if a.equivalent_to.is_some() {
             for r in &mut reports {

@@ -83,7 +83,7 @@ thread_local! {
 
 impl ShapeWalk<'_> {
     /// Checks every shape; returns the lexicographically least failing shape's first box when
-    /// `first`, or some failing shape's otherwise. `progress(1)` per shape checked.
+    /// `first`, or some failing shape's otherwise. `progress.advance(1)` per shape checked.
     pub(crate) fn run(&self, first: bool, progress: Progress) -> Option<BoxFailure> {
         self.run_counted(first, progress).0
     }
@@ -116,7 +116,7 @@ impl ShapeWalk<'_> {
             // One shape (all zeros), one box holding every point.
             let shape = vec![0u32; dims];
             let failure = walk.leaf(None, 0, 0, &shape);
-            progress(1);
+            progress.advance(1);
             return (failure, 1);
         }
         let root = vec![0u32; dims];
@@ -194,7 +194,7 @@ impl Walk<'_, '_> {
                                 q.record(f, found);
                             }
                         }
-                        progress(1);
+                        progress.advance(1);
                     }
                 }
                 Step::Inner(p, v) => {

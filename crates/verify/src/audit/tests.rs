@@ -17,7 +17,15 @@ fn registry() -> Registry {
 /// (claims Owen), written as `gartowen verify --json` writes it.
 fn certificate(registry: &Registry) -> Certificate {
     let names = ["none".to_string(), "owen-oracle:base=4".to_string()];
-    let reports = verify_shard(registry, &names, Level::Quick, Shard::ALL, None, &|_| {}).unwrap();
+    let reports = verify_shard(
+        registry,
+        &names,
+        Level::Quick,
+        Shard::ALL,
+        None,
+        &gartowen_core::Silent,
+    )
+    .unwrap();
     let failed = reports.iter().any(ImplReport::failed);
     Certificate::new(
         "verify",

@@ -3,7 +3,7 @@
 //! laws of the depths below the chunk's.
 
 use super::{SweepError, SweepFailure, SweepPlan};
-use gartowen_core::Scrambler;
+use gartowen_core::{Progress, Scrambler, Silent};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::ops::Range;
@@ -281,14 +281,14 @@ fn scan_chunk(
     dim: u32,
     c: u64,
     scratch: &mut Scratch,
-    progress: &(dyn Fn(u64) + Sync),
+    progress: &dyn Progress,
 ) -> ChunkRecord {
     if plan.base().q() == 1 {
         let r = scan_chunk_with::<true>(s, plan, dim, c, scratch, progress);
         if r.failure.is_none() {
             return r;
         }
-        let mut again = scan_chunk_with::<false>(s, plan, dim, c, scratch, &|_| {});
+        let mut again = scan_chunk_with::<false>(s, plan, dim, c, scratch, &Silent);
         again.rescanned = true;
         return again;
     }
@@ -302,7 +302,7 @@ fn scan_chunk_with<const BINARY: bool>(
     dim: u32,
     c: u64,
     scratch: &mut Scratch,
-    progress: &(dyn Fn(u64) + Sync),
+    progress: &dyn Progress,
 ) -> ChunkRecord {
     let (w, q, d) = (plan.width().bits(), plan.base().q(), plan.chunk_digits());
     let laws = plan.law_depths() - d;
@@ -381,7 +381,7 @@ fn scan_chunk_with<const BINARY: bool>(
             break;
         }
         done += len as u64;
-        progress(len as u64);
+        progress.advance(len as u64);
     }
     ChunkRecord {
         first,
@@ -414,7 +414,7 @@ fn find_input(
 }
 
 /// Sweeps chunks `chunks` of dimension `dim` of `s` under `plan`, in parallel on the current
-/// rayon pool; `progress` is called with the number of words after each frame. The piece is the
+/// rayon pool; `progress` advances by the number of words after each frame. The piece is the
 /// same for any thread count. Scanning stops at the first failure (chunks after a failed one are
 /// not needed to name it).
 pub fn sweep(
@@ -422,7 +422,7 @@ pub fn sweep(
     plan: &SweepPlan,
     dim: u32,
     chunks: Range<u64>,
-    progress: &(dyn Fn(u64) + Sync),
+    progress: &dyn Progress,
 ) -> Result<SweepPiece, SweepError> {
     plan.check_range(&chunks)?;
     let failed_at = AtomicU64::new(u64::MAX);
