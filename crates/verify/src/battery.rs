@@ -24,6 +24,7 @@ pub use crate::structure::{
 };
 pub use crate::verdict::{CheckResult, ImplReport, Verdict};
 
+use crate::error::MergeError;
 use crate::law_runner::run_laws;
 use gartowen_core::{Claim, CoreError, Progress, Registry, Silent};
 use std::time::Instant;
@@ -58,39 +59,37 @@ impl Shard {
 /// Merges shard reports into one list in implementation order: exactly `total`
 /// implementations, each once, every one with the same checks in the same order. Errors name
 /// the duplicate, the missing implementation or the odd check list.
-pub fn merge(parts: Vec<Vec<ImplReport>>, total: usize) -> Result<Vec<ImplReport>, String> {
+pub fn merge(parts: Vec<Vec<ImplReport>>, total: usize) -> Result<Vec<ImplReport>, MergeError> {
     let mut all: Vec<ImplReport> = parts.into_iter().flatten().collect();
     all.sort_by_key(|r| r.index);
     if let Some(w) = all.windows(2).find(|w| w[0].index == w[1].index) {
-        return Err(format!(
-            "implementation {} ({}) appears in two shards",
-            w[0].index, w[0].name
-        ));
+        return Err(MergeError::Duplicate {
+            index: w[0].index,
+            name: w[0].name.clone(),
+        });
     }
     if let Some((k, r)) = all.iter().enumerate().find(|(k, r)| r.index != *k) {
-        return Err(format!(
-            "implementation {k} is missing (next present: {} at {})",
-            r.name, r.index
-        ));
+        return Err(MergeError::Missing {
+            index: k,
+            next: (r.name.clone(), r.index),
+        });
     }
     if all.len() != total {
-        return Err(format!(
-            "{} of {total} implementations present: {} to {} are missing",
-            all.len(),
-            all.len(),
-            total.saturating_sub(1)
-        ));
+        return Err(MergeError::Short {
+            present: all.len(),
+            total,
+        });
     }
     let names = |r: &ImplReport| r.checks.iter().map(|c| c.check.clone()).collect::<Vec<_>>();
     if let Some(first) = all.first() {
         let want = names(first);
         if let Some(r) = all.iter().find(|r| names(r) != want) {
-            return Err(format!(
-                "implementation {} ({}) has checks {:?}, the others {want:?}",
-                r.index,
-                r.name,
-                names(r)
-            ));
+            return Err(MergeError::Checks {
+                index: r.index,
+                name: r.name.clone(),
+                checks: names(r),
+                expected: want,
+            });
         }
     }
     Ok(all)
@@ -162,7 +161,7 @@ pub fn check_candidate(c: &Candidate, level: Level, judged: usize) -> ImplReport
         Err(e) => checks.push(guard(CheckResult {
             check: "laws".into(),
             verdict: Verdict::Fail,
-            detail: format!("could not build per-seed instances: {e}"),
+            detail: format!("the laws could not run: {e}"),
             value: None,
             seconds: started.elapsed().as_secs_f64(),
             p_value: None,
@@ -223,4 +222,83 @@ pub fn verify_shard(
     }
     progress.finish();
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn report(index: usize, checks: &[&str]) -> ImplReport {
+        ImplReport {
+            index,
+            name: format!("impl-{index}"),
+            base: 2,
+            claims_nested_uniform: false,
+            claim: "nested".into(),
+            checks: checks
+                .iter()
+                .map(|c| CheckResult {
+                    check: c.to_string(),
+                    verdict: Verdict::Pass,
+                    detail: String::new(),
+                    value: None,
+                    seconds: 0.0,
+                    p_value: None,
+                    alpha: None,
+                    tests: Vec::new(),
+                })
+                .collect(),
+            profile: Vec::new(),
+        }
+    }
+
+    #[test]
+    fn merge_restores_order_and_names_what_is_wrong() {
+        let ab = &["inverse", "nested"];
+        let merged = merge(
+            vec![vec![report(2, ab)], vec![report(0, ab), report(1, ab)]],
+            3,
+        );
+        let order: Vec<usize> = merged.unwrap().iter().map(|r| r.index).collect();
+        assert_eq!(order, [0, 1, 2]);
+        assert_eq!(
+            merge(
+                vec![vec![report(0, ab), report(1, ab)], vec![report(1, ab)]],
+                2
+            ),
+            Err(MergeError::Duplicate {
+                index: 1,
+                name: "impl-1".into()
+            })
+        );
+        assert_eq!(
+            merge(vec![vec![report(0, ab)], vec![report(2, ab)]], 3),
+            Err(MergeError::Missing {
+                index: 1,
+                next: ("impl-2".into(), 2)
+            })
+        );
+        let short = merge(vec![vec![report(0, ab), report(1, ab)]], 4).unwrap_err();
+        assert_eq!(
+            short,
+            MergeError::Short {
+                present: 2,
+                total: 4
+            }
+        );
+        assert_eq!(
+            short.to_string(),
+            "2 of 4 implementations present: 2 to 3 are missing"
+        );
+        let odd = merge(vec![vec![report(0, ab), report(1, &["inverse"])]], 2).unwrap_err();
+        assert_eq!(
+            odd,
+            MergeError::Checks {
+                index: 1,
+                name: "impl-1".into(),
+                checks: vec!["inverse".into()],
+                expected: vec!["inverse".into(), "nested".into()],
+            }
+        );
+    }
 }

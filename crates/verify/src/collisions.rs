@@ -212,7 +212,11 @@ impl LawFamily for Collisions {
         "within one seed, normalized subtrees of height h under many nodes per depth: no two equal"
     }
 
-    fn own_pass(&self, cfg: &LawConfig, pass: &OwnPass) -> Result<Vec<SubTest>, String> {
+    fn own_pass(
+        &self,
+        cfg: &LawConfig,
+        pass: &OwnPass,
+    ) -> Result<Vec<SubTest>, crate::error::BatteryError> {
         let Some(plan) = collision_plan(cfg) else {
             return Ok(Vec::new());
         };

@@ -135,7 +135,11 @@ impl LawFamily for Dimensions {
         root_analyse(cfg, outputs)
     }
 
-    fn own_pass(&self, cfg: &LawConfig, pass: &OwnPass) -> Result<Vec<SubTest>, String> {
+    fn own_pass(
+        &self,
+        cfg: &LawConfig,
+        pass: &OwnPass,
+    ) -> Result<Vec<SubTest>, crate::error::BatteryError> {
         let probes = distinct_probes(cfg);
         let out = pass.evaluate(0, &probes)?;
         let views: Vec<&[Vec<u64>]> = out.iter().map(|o| o.as_slice()).collect();

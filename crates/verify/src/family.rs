@@ -7,6 +7,7 @@
 //! seed counts) runs a pass of its own through [`OwnPass`], after the shared outputs are
 //! dropped. A family's sub-tests are its own pass's, then the shared pass's.
 
+use crate::error::BatteryError;
 use crate::level::LevelPlan;
 use crate::sampling::{evaluate, Outputs, Probe, SeedBuilder, Tree};
 use crate::subtest::{Requirement, SubTest};
@@ -50,7 +51,7 @@ pub struct OwnPass<'a, 'b> {
 
 impl OwnPass<'_, '_> {
     /// Scrambles `probes` for seeds `seed_base + first + i`, i in `0..max(probe.seeds)`.
-    pub fn evaluate(&self, first: u64, probes: &[Probe]) -> Result<Outputs, String> {
+    pub fn evaluate(&self, first: u64, probes: &[Probe]) -> Result<Outputs, BatteryError> {
         evaluate(
             self.with_seed,
             self.width,
@@ -84,7 +85,7 @@ pub trait LawFamily {
     }
 
     /// Sub-tests from a pass of the family's own, run after the shared outputs are dropped.
-    fn own_pass(&self, _cfg: &LawConfig, _pass: &OwnPass) -> Result<Vec<SubTest>, String> {
+    fn own_pass(&self, _cfg: &LawConfig, _pass: &OwnPass) -> Result<Vec<SubTest>, BatteryError> {
         Ok(Vec::new())
     }
 }

@@ -45,7 +45,7 @@ pub fn run_laws(
     c: &Candidate,
     level: Level,
     seed_base: u64,
-) -> Result<Vec<(&'static str, Vec<SubTest>)>, String> {
+) -> Result<Vec<(&'static str, Vec<SubTest>)>, crate::error::BatteryError> {
     let cfg = config(c, level);
     let width = cfg.tree.layout.width();
     let groups: Vec<Vec<Probe>> = FAMILIES.iter().map(|f| f.shared_probes(&cfg)).collect();

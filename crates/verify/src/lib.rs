@@ -23,6 +23,7 @@ pub mod certificate;
 pub mod collisions;
 pub mod dimensions;
 pub mod equivalence;
+pub mod error;
 pub mod expected;
 pub mod family;
 pub mod flip_rank;

@@ -45,14 +45,60 @@ pub fn max_m(base: PowerOfTwoBase, level: Level) -> u32 {
     (level.plan().net_log2_points / base.q()).max(2)
 }
 
-/// One base's net check: `Ok(summary)` when every m keeps its t-value, `Err(detail)` naming
-/// the first m that does not.
+/// The nets of one base that kept their t-values: the sequence, its dimensions and every m
+/// up to `top_m`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct NetsKept {
+    /// The sequence (`sobol`, `sz4`, `faure:base=8`, …).
+    pub sequence: String,
+    /// Its dimensions checked together.
+    pub dims: Vec<usize>,
+    /// Every m from 1 to this kept its t-value.
+    pub top_m: u32,
+}
+
+impl std::fmt::Display for NetsKept {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{} dims {:?} m ≤ {}",
+            self.sequence, self.dims, self.top_m
+        )
+    }
+}
+
+/// The first net of one base whose t-value the scramble changed.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct NetBroken {
+    /// The sequence.
+    pub sequence: String,
+    /// Its dimensions.
+    pub dims: Vec<usize>,
+    /// The net's m (b^m points).
+    pub m: u32,
+    /// The t-value after scrambling.
+    pub scrambled_t: u32,
+    /// The t-value before (the generator matrices').
+    pub t: u32,
+}
+
+impl std::fmt::Display for NetBroken {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{} dims {:?}, m = {}: t = {} after scrambling, {} before",
+            self.sequence, self.dims, self.m, self.scrambled_t, self.t
+        )
+    }
+}
+
+/// One base's net check: every m keeps its t-value, or the first m that does not.
 pub fn check_base(
     s: &dyn Scrambler,
     width: Width,
     base: PowerOfTwoBase,
     level: Level,
-) -> Result<String, String> {
+) -> Result<NetsKept, NetBroken> {
     let (kind, dims) = net_sequence(base);
     let seq = kind
         .build(dims.iter().max().expect("dims") + 1, width)
@@ -74,13 +120,20 @@ pub fn check_base(
         let got =
             t_value(&p, CheckBase::new(base.base() as u64).expect("base"), m).expect("t-value");
         if got != expected {
-            return Err(format!(
-                "{} dims {dims:?}, m = {m}: t = {got} after scrambling, {expected} before",
-                kind.name()
-            ));
+            return Err(NetBroken {
+                sequence: kind.name(),
+                dims,
+                m,
+                scrambled_t: got,
+                t: expected,
+            });
         }
     }
-    Ok(format!("{} dims {dims:?} m ≤ {top}", kind.name()))
+    Ok(NetsKept {
+        sequence: kind.name(),
+        dims,
+        top_m: top,
+    })
 }
 
 /// The `nets` check: every base the scrambler is nested in.
@@ -88,8 +141,8 @@ pub fn check_nets(s: &dyn Scrambler, width: Width, level: Level) -> (Verdict, St
     let mut kept = Vec::new();
     for base in nested_bases(s.base()) {
         match check_base(s, width, base, level) {
-            Ok(summary) => kept.push(summary),
-            Err(detail) => return (Verdict::Fail, detail),
+            Ok(summary) => kept.push(summary.to_string()),
+            Err(broken) => return (Verdict::Fail, broken.to_string()),
         }
     }
     (Verdict::Pass, format!("t-values kept: {}", kept.join("; ")))

@@ -23,6 +23,7 @@
 //! inputs. A digital shift keeps y_i ⊕ y_k fixed and misses it by far.
 
 use crate::equivalence::{judge, Equivalence, EquivalenceSettings, EquivalenceVerdict};
+use crate::error::BatteryError;
 use crate::level::Level;
 use crate::sampling::{evaluate, Probe, SeedBuilder};
 use crate::verdict::{CheckResult, Verdict};
@@ -143,7 +144,7 @@ pub fn variance_ratios(
     base: PowerOfTwoBase,
     width: Width,
     seeds: u64,
-) -> Result<VarianceRatios, String> {
+) -> Result<VarianceRatios, BatteryError> {
     let points = fixed_points();
     let q = base.q();
     let up = width.bits().saturating_sub(32);

@@ -8,6 +8,7 @@
 //! first k digits are p; its permutation's image of digit d is digit k of the scramble of the
 //! word (p, d, 0, 0, …), for any nested scramble.
 
+use crate::error::BatteryError;
 use gartowen_core::{DigitLayout, Scrambler, SplitMix64, Width};
 use rayon::prelude::*;
 
@@ -36,7 +37,7 @@ pub fn evaluate(
     width: Width,
     seed_base: u64,
     probes: &[Probe],
-) -> Result<Outputs, String> {
+) -> Result<Outputs, BatteryError> {
     let seeds = probes.iter().map(|p| p.seeds).max().unwrap_or(0);
     let mut dims: Vec<u32> = probes.iter().map(|p| p.dim).collect();
     dims.sort_unstable();
@@ -44,7 +45,8 @@ pub fn evaluate(
     (0..seeds)
         .into_par_iter()
         .map(|i| {
-            let s = with_seed(seed_base.wrapping_add(i))?;
+            let seed = seed_base.wrapping_add(i);
+            let s = with_seed(seed).map_err(|message| BatteryError::Instance { seed, message })?;
             let mut out = vec![Vec::new(); probes.len()];
             for &dim in &dims {
                 let active: Vec<usize> = (0..probes.len())
@@ -147,5 +149,41 @@ pub fn prefix_name(prefix: &[u32]) -> String {
             .map(|d| format!("{d:x}"))
             .collect::<Vec<_>>()
             .join(".")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use gartowen_core::Identity;
+
+    #[test]
+    fn a_refused_seed_is_named_with_the_builders_words() {
+        let picky: Box<SeedBuilder> = Box::new(|seed| {
+            if seed == 7 {
+                Err("the license server is down".into())
+            } else {
+                Ok(Box::new(Identity))
+            }
+        });
+        let probe = Probe {
+            dim: 0,
+            words: vec![1, 2],
+            seeds: 4,
+        };
+        let fine = evaluate(picky.as_ref(), Width::W32, 0, std::slice::from_ref(&probe));
+        assert_eq!(fine.unwrap()[3][0], vec![1, 2]);
+        let refused = evaluate(picky.as_ref(), Width::W32, 5, &[probe]).unwrap_err();
+        assert_eq!(
+            refused,
+            BatteryError::Instance {
+                seed: 7,
+                message: "the license server is down".into()
+            }
+        );
+        assert_eq!(
+            refused.to_string(),
+            "no instance for seed 7: the license server is down"
+        );
     }
 }

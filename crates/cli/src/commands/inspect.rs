@@ -243,7 +243,7 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
             twin: None,
             claim,
         };
-        let families = run_laws(&c, Level::Quick, 0).map_err(CliError::Usage)?;
+        let families = run_laws(&c, Level::Quick, 0).map_err(|e| CliError::Usage(e.to_string()))?;
         if let Some(e) = external_failure() {
             return Err(CliError::External(e.to_string()));
         }

@@ -138,7 +138,7 @@ fn merged(paths: &[PathBuf]) -> Result<(Level, Vec<ImplReport>, Option<String>),
     let total = f.parameters["implementations_total"]
         .as_u64()
         .ok_or_else(|| refuse(fp, "no implementations_total"))? as usize;
-    let all = merge(parts, total).map_err(CliError::Usage)?;
+    let all = merge(parts, total).map_err(|e| CliError::Usage(e.to_string()))?;
     gartowen::audit::audit_merged(&all, total, judged)
         .map_err(|e| CliError::Usage(format!("the merged shards: {e}")))?;
     let claim = f.parameters["claim_override"].as_str().map(str::to_string);
