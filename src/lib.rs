@@ -7,6 +7,7 @@ pub use gartowen_core as core;
 pub use gartowen_discrepancy as discrepancy;
 pub use gartowen_netcheck as netcheck;
 pub use gartowen_oracles as oracles;
+pub use gartowen_owen as owen;
 pub use gartowen_seq as seq;
 pub use gartowen_verify as battery;
 
@@ -34,7 +35,7 @@ pub mod verify {
 /// Every scrambler gartowen knows, in one list; cross-checks iterate over it.
 pub fn registry() -> Registry {
     let mut r = Registry::with_core();
-    for spec in gartowen_oracles::registry::specs()
+    for spec in gartowen_owen::registry::specs()
         .into_iter()
         .chain(gartowen_art::registry::specs())
     {

@@ -9,7 +9,7 @@ use gartowen::core::{BuildContext, PowerOfTwoBase, Scrambler, Width};
 use gartowen::discrepancy::{
     compensated::compensated, expected::expected_l2star_owen, Kind, Points,
 };
-use gartowen::oracles::{FullTreeOwen, OwenVariant};
+use gartowen::owen::{FullTreeOwen, OwenVariant};
 
 const REPLICATES: u64 = 2000;
 

@@ -12,7 +12,7 @@
 
 use gartowen::core::{BuildContext, PowerOfTwoBase, Scrambler, SplitMix64, Width};
 use gartowen::oracles::owen_variance::owen_box_variance;
-use gartowen::oracles::{FullTreeOwen, OwenVariant};
+use gartowen::owen::{FullTreeOwen, OwenVariant};
 use statrs::distribution::{ContinuousCDF, Normal};
 
 fn z_star(cells: usize) -> f64 {

@@ -60,7 +60,7 @@ fn every_registered_scrambler_keeps_t_values_in_the_scrambling_base() {
 
 #[test]
 fn oracle_variants_in_every_base_keep_sz16_base_16_nets() {
-    use gartowen::oracles::{FullTreeOwen, OwenVariant};
+    use gartowen::owen::{FullTreeOwen, OwenVariant};
     let seq = SequenceKind::Sz16.build(16, Width::W32).unwrap();
     let dims: Vec<usize> = (0..16).collect();
     for variant in OwenVariant::ALL {
@@ -137,7 +137,7 @@ fn every_registered_scrambler_keeps_nets_in_every_base_it_is_nested_in() {
 /// net each break it on some seed.
 #[test]
 fn a_scrambler_whose_base_the_net_is_not_nested_in_breaks_it_on_an_instance() {
-    use gartowen::oracles::{FullTreeOwen, OwenVariant};
+    use gartowen::owen::{FullTreeOwen, OwenVariant};
     use gartowen::verify::nets::check_base;
     use gartowen::verify::Level;
     for (scramble_q, net_q) in [(4u32, 3u32), (3, 4), (2, 3)] {

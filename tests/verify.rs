@@ -9,7 +9,7 @@ use gartowen::core::{
     mix64, Claim, CoreError, DigitLayout, PowerOfTwoBase, Registry, Scrambler, ScramblerRequest,
     ScramblerSpec, Width,
 };
-use gartowen::oracles::{FullTreeOwen, OwenVariant};
+use gartowen::owen::{FullTreeOwen, OwenVariant};
 use gartowen::verify::{verify, Level, Verdict};
 
 /// Translation-only ART-Owen in base 16, but claiming nested uniformity.

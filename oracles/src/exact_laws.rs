@@ -6,8 +6,8 @@
 //! every other node multiplies each outcome's count by the same factor, so enumerating the
 //! path nodes alone gives the same exact probabilities as enumerating the whole tree.
 
-use crate::OwenVariant;
 use gartowen_core::{Gf2Matrix, Permutation};
+use gartowen_owen::OwenVariant;
 use std::collections::BTreeMap;
 
 /// Every node permutation of the variant's parameter space for base 2^q (one entry per

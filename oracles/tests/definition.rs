@@ -6,7 +6,7 @@
 use gartowen_core::Unscramble;
 use gartowen_core::{PowerOfTwoBase, Scrambler, SplitMix64, Width};
 use gartowen_oracles::owen_definition;
-use gartowen_oracles::{FullTreeOwen, OwenVariant};
+use gartowen_owen::{FullTreeOwen, OwenVariant};
 
 fn widths() -> [Width; 3] {
     [Width::new(16).unwrap(), Width::W32, Width::W64]

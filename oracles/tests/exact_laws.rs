@@ -4,7 +4,7 @@
 //! (AGL(2,2) = S_4).
 
 use gartowen_oracles::exact_laws::{check_lemma, pair_law, parameter_space, LemmaParts};
-use gartowen_oracles::OwenVariant;
+use gartowen_owen::OwenVariant;
 
 /// Pairs of depth-2 inputs sharing exactly k digits, for k = 0 and 1.
 fn pairs(b: u32) -> Vec<(Vec<u32>, Vec<u32>)> {

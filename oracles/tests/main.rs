@@ -3,6 +3,3 @@
 
 mod definition;
 mod exact_laws;
-mod full_tree;
-mod golden;
-mod statistics;

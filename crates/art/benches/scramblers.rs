@@ -7,7 +7,7 @@ use gartowen_art::peers::{LkFlavor, LkHash, PerBitOwen};
 use gartowen_art::{ArtMutant, ArtOwen, ArtVariant};
 use gartowen_core::ScramblerExt;
 use gartowen_core::{Identity, PowerOfTwoBase, Scrambler, SplitMix64};
-use gartowen_oracles::{FullTreeOwen, OwenVariant};
+use gartowen_owen::{FullTreeOwen, OwenVariant};
 
 const N: usize = 4096;
 

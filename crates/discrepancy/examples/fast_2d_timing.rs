@@ -1,7 +1,7 @@
 //! One-shot timing of the fast exact 2-D L2-star on 2^20 Owen-scrambled Sobol points.
 use gartowen_core::{PowerOfTwoBase, Scrambler, Width};
 use gartowen_discrepancy::{fast2d, Points};
-use gartowen_oracles::{FullTreeOwen, OwenVariant};
+use gartowen_owen::{FullTreeOwen, OwenVariant};
 use std::time::Instant;
 
 fn main() {

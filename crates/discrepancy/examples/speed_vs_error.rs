@@ -4,7 +4,7 @@
 //! directory. Usage: cargo run --release -p gartowen-discrepancy --example speed_vs_error [DIR]
 use gartowen_core::{word_to_f64, PowerOfTwoBase, Scrambler, Width};
 use gartowen_discrepancy::{compensated, exact, fast2d, naive, rational, Kind, Points};
-use gartowen_oracles::{FullTreeOwen, OwenVariant};
+use gartowen_owen::{FullTreeOwen, OwenVariant};
 use std::time::Instant;
 
 fn set(n: usize, d: usize) -> Vec<u64> {

@@ -6,7 +6,7 @@ use gartowen_discrepancy::{
     compensated::compensated, exact::exact, fast2d, naive::naive, rational, Kind, Points,
 };
 use gartowen_oracles::exact_discrepancy::{reference_discrepancy, ReferenceKind};
-use gartowen_oracles::{FullTreeOwen, OwenVariant};
+use gartowen_owen::{FullTreeOwen, OwenVariant};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::Signed;

@@ -12,7 +12,7 @@ fn main() {
     let name = args.get(1).map_or("owen-oracle", |s| s.as_str());
     let runs: u64 = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(200);
     let mut registry = Registry::with_core();
-    for spec in gartowen_oracles::registry::specs()
+    for spec in gartowen_owen::registry::specs()
         .into_iter()
         .chain(gartowen_art::registry::specs())
     {

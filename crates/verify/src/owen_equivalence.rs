@@ -346,7 +346,7 @@ pub fn check_equivalent_to_owen(
 mod tests {
     use super::*;
     use gartowen_core::Scrambler;
-    use gartowen_oracles::full_tree::{FullTreeOwen, OwenVariant};
+    use gartowen_owen::{FullTreeOwen, OwenVariant};
 
     fn oracle(base: PowerOfTwoBase, variant: OwenVariant) -> Box<SeedBuilder<'static>> {
         Box::new(move |seed| {

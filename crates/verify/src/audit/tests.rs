@@ -7,7 +7,7 @@ use serde_json::json;
 
 fn registry() -> Registry {
     let mut r = Registry::with_core();
-    for spec in gartowen_oracles::registry::specs() {
+    for spec in gartowen_owen::registry::specs() {
         r.add(spec);
     }
     r

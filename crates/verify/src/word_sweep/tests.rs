@@ -2,7 +2,7 @@ use super::scan::{node_cell, node_cells};
 use super::*;
 use gartowen_core::{Claim, Permutation, SplitMix64};
 use gartowen_oracles::inspector::{inspect_exhaustive, NodeLaw};
-use gartowen_oracles::{FullTreeOwen, OwenVariant};
+use gartowen_owen::{FullTreeOwen, OwenVariant};
 
 /// A map given by a closure, at the widths listed (for broken and partial variants).
 struct Mapped<F> {

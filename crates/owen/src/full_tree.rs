@@ -25,7 +25,8 @@
 //! [`Scrambler::scramble_f64`] compute only the digits their output keeps (the top 24 or 53
 //! bits): for a nested scramble the other digits cannot change those bits.
 //!
-//! The keying is frozen by the golden vectors in `oracles/tests/golden.rs`.
+//! The keying is frozen by the golden vectors in `crates/owen/tests/golden.rs`, and
+//! `gartowen_oracles::owen_definition` writes it out as the definition reads.
 
 use crate::node_draw::{node_image, node_permutation};
 use gartowen_core::Unscramble;
@@ -425,22 +426,4 @@ impl Unscramble for FullTreeOwen {
         let digits = DigitLayout::new(width, self.base).num_digits();
         self.run(y, width, dim, true, digits)
     }
-}
-
-/// Applies the nested scramble whose node (depth k, original prefix p) permutation is
-/// `node(k, p)`: the plain tree walk, digit by digit, that every fast scrambler must equal when
-/// driven by its own node permutations (the explicit-tree bridge).
-pub fn scramble_with_nodes(
-    x: u64,
-    width: Width,
-    base: PowerOfTwoBase,
-    node: impl Fn(u32, u64) -> Permutation,
-) -> u64 {
-    let layout = DigitLayout::new(width, base);
-    let mut out = 0u64;
-    for k in 0..layout.num_digits() {
-        let sigma = node(k, layout.prefix(x, k));
-        out = layout.set(out, k, sigma.apply(layout.get(x, k)));
-    }
-    out
 }

@@ -6,7 +6,7 @@
 
 use gartowen_core::Unscramble;
 use gartowen_core::{PowerOfTwoBase, Scrambler, Width};
-use gartowen_oracles::{FullTreeOwen, OwenVariant};
+use gartowen_owen::{FullTreeOwen, OwenVariant};
 
 #[rustfmt::skip]
 const GOLDEN: [(u32, OwenVariant, [u64; 4], u64); 20] = [

@@ -1,7 +1,7 @@
 //! Prints the oracle's golden vectors (hex) for tests/golden.rs: outputs for fixed inputs,
 //! per base and variant. Regenerate only on a deliberate change of the documented keying.
 use gartowen_core::{PowerOfTwoBase, Scrambler, Width};
-use gartowen_oracles::{FullTreeOwen, OwenVariant};
+use gartowen_owen::{FullTreeOwen, OwenVariant};
 
 fn main() {
     let inputs = [0u64, 0x8000_0000, 0x1234_5678, 0xFFFF_FFFF];

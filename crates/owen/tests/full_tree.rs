@@ -3,7 +3,7 @@
 use gartowen_core::Unscramble;
 use gartowen_core::{mix64, DigitLayout, PowerOfTwoBase, Scrambler, Width};
 use gartowen_oracles::inspector::{inspect_exhaustive, inspect_probes, ViolationKind};
-use gartowen_oracles::{FullTreeOwen, OwenVariant};
+use gartowen_owen::{FullTreeOwen, OwenVariant};
 
 fn base(q: u32) -> PowerOfTwoBase {
     PowerOfTwoBase::from_q(q).unwrap()

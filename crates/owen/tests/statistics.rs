@@ -9,7 +9,7 @@ use gartowen_core::{
     hash_words, DigitLayout, Permutation, PowerOfTwoBase, Scrambler, SplitMix64, Width,
 };
 use gartowen_oracles::inspector::NodeLaw;
-use gartowen_oracles::{FullTreeOwen, OwenVariant};
+use gartowen_owen::{FullTreeOwen, OwenVariant};
 use statrs::distribution::{ChiSquared, ContinuousCDF};
 
 const ALPHA: f64 = 1e-3;

@@ -4,7 +4,7 @@
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use gartowen_core::{Identity, PowerOfTwoBase, Scrambler, SplitMix64, Width};
-use gartowen_oracles::{FullTreeOwen, OwenVariant};
+use gartowen_owen::{FullTreeOwen, OwenVariant};
 
 const N: usize = 1024;
 
