@@ -9,10 +9,14 @@ use std::str::FromStr;
 pub enum SequenceKind {
     /// Sobol with Joe–Kuo 6.21201 direction numbers (base 2).
     Sobol,
-    /// SZ-style (0,4)-sequence in base 4, 4 dimensions.
+    /// The published 4-D SZ sequence, a (0,4)-sequence in base 4 ([`sz::sz4`]).
     Sz4,
-    /// SZ-style (0,16)-sequence in base 16, 16 dimensions.
+    /// A (0,16)-sequence in base 16 whose first quad is the 4-D SZ ([`sz::sz16`]).
     Sz16,
+    /// gartowen's earlier reconstruction of sz4 ([`sz::sz4_faure`]).
+    Sz4Faure,
+    /// gartowen's earlier reconstruction of sz16 ([`sz::sz16_faure`]).
+    Sz16Faure,
     /// The Faure (0,b)-sequence over GF(b), b = 2^q, q = 1..8 ([`faure::faure`]).
     Faure(PowerOfTwoBase),
     /// The (0,m,b+1)-net in base b: i/b^m, then the Faure sequence ([`faure::faure_net`]).
@@ -23,6 +27,16 @@ impl SequenceKind {
     /// The fixed built-in sequences (the Faure families take a base; see
     /// [`SequenceKind::faure_all`]).
     pub const ALL: [SequenceKind; 3] = [SequenceKind::Sobol, SequenceKind::Sz4, SequenceKind::Sz16];
+
+    /// Every sequence with a fixed name: [`SequenceKind::ALL`] and the earlier
+    /// reconstructions kept for reproducing old results.
+    pub const NAMED: [SequenceKind; 5] = [
+        SequenceKind::Sobol,
+        SequenceKind::Sz4,
+        SequenceKind::Sz16,
+        SequenceKind::Sz4Faure,
+        SequenceKind::Sz16Faure,
+    ];
 
     /// The Faure sequence in every base 2^q, q = 1..8.
     pub fn faure_all() -> Vec<SequenceKind> {
@@ -37,6 +51,8 @@ impl SequenceKind {
             SequenceKind::Sobol => "sobol".into(),
             SequenceKind::Sz4 => "sz4".into(),
             SequenceKind::Sz16 => "sz16".into(),
+            SequenceKind::Sz4Faure => "sz4-faure".into(),
+            SequenceKind::Sz16Faure => "sz16-faure".into(),
             SequenceKind::Faure(b) => faure::faure_name(b),
             SequenceKind::FaureNet(b, m) => format!("faure-net:base={}:m={m}", b.base()),
         }
@@ -46,8 +62,8 @@ impl SequenceKind {
     pub fn base(self) -> PowerOfTwoBase {
         match self {
             SequenceKind::Sobol => PowerOfTwoBase::B2,
-            SequenceKind::Sz4 => PowerOfTwoBase::B4,
-            SequenceKind::Sz16 => PowerOfTwoBase::B16,
+            SequenceKind::Sz4 | SequenceKind::Sz4Faure => PowerOfTwoBase::B4,
+            SequenceKind::Sz16 | SequenceKind::Sz16Faure => PowerOfTwoBase::B16,
             SequenceKind::Faure(b) | SequenceKind::FaureNet(b, _) => b,
         }
     }
@@ -56,8 +72,8 @@ impl SequenceKind {
     pub fn max_dims(self) -> usize {
         match self {
             SequenceKind::Sobol => sobol::MAX_DIMS,
-            SequenceKind::Sz4 => sz::SZ4_DIMS,
-            SequenceKind::Sz16 => sz::SZ16_DIMS,
+            SequenceKind::Sz4 | SequenceKind::Sz4Faure => sz::SZ4_DIMS,
+            SequenceKind::Sz16 | SequenceKind::Sz16Faure => sz::SZ16_DIMS,
             SequenceKind::Faure(b) => faure::faure_max_dims(b),
             SequenceKind::FaureNet(b, _) => faure::faure_max_dims(b) + 1,
         }
@@ -69,8 +85,63 @@ impl SequenceKind {
             SequenceKind::Sobol => sobol::sequence(dims, width),
             SequenceKind::Sz4 => sz::sz4(dims, width),
             SequenceKind::Sz16 => sz::sz16(dims, width),
+            SequenceKind::Sz4Faure => sz::sz4_faure(dims, width),
+            SequenceKind::Sz16Faure => sz::sz16_faure(dims, width),
             SequenceKind::Faure(b) => faure::faure(b, dims, width),
             SequenceKind::FaureNet(b, m) => faure::faure_net(b, m, dims, width),
+        }
+    }
+
+    /// Where the sequence's generator matrices come from.
+    pub fn provenance(self) -> Provenance {
+        match self {
+            SequenceKind::Sobol => Provenance::Published(
+                "Sobol (1967) with the Joe–Kuo 6.21201 direction numbers (2008)",
+            ),
+            SequenceKind::Sz4 => Provenance::ThirdPartyDerived(
+                "the 4-D SZ of Ahmed, Pharr, Ostromoukhov, Huang, ACM TOG 44(6), 2025, as \
+                 public third-party code fixes it (identity, Pascal P, P4(β), P·P4(β))",
+            ),
+            SequenceKind::Sz16 => Provenance::Own(
+                "first quad the 4-D SZ; the other three quads and the ensemble are gartowen's \
+                 own (the paper does not publish them)",
+            ),
+            SequenceKind::Sz4Faure | SequenceKind::Sz16Faure => Provenance::Own(
+                "gartowen's earlier SZ-style reconstruction (GF(4)/GF(16) Faure matrices with \
+                 output transforms), kept for reproducing older results",
+            ),
+            SequenceKind::Faure(_) | SequenceKind::FaureNet(..) => Provenance::Published(
+                "Faure (1982) over GF(2^q), generalized by Niederreiter (1987)",
+            ),
+        }
+    }
+}
+
+/// Where a sequence's generator matrices come from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Provenance {
+    /// Defined in a published paper.
+    Published(&'static str),
+    /// Published in words; the bits follow public third-party code.
+    ThirdPartyDerived(&'static str),
+    /// gartowen's own construction.
+    Own(&'static str),
+}
+
+impl Provenance {
+    /// `published`, `third-party-derived` or `gartowen's own`.
+    pub fn label(self) -> &'static str {
+        match self {
+            Provenance::Published(_) => "published",
+            Provenance::ThirdPartyDerived(_) => "third-party-derived",
+            Provenance::Own(_) => "gartowen's own",
+        }
+    }
+
+    /// The source, in words.
+    pub fn source(self) -> &'static str {
+        match self {
+            Provenance::Published(s) | Provenance::ThirdPartyDerived(s) | Provenance::Own(s) => s,
         }
     }
 }
@@ -104,7 +175,7 @@ fn parameters(name: &str, parts: &[&str], keys: &[&str]) -> Result<Vec<u64>, Seq
 impl FromStr for SequenceKind {
     type Err = SeqError;
     fn from_str(s: &str) -> Result<Self, SeqError> {
-        if let Some(k) = SequenceKind::ALL.into_iter().find(|k| k.name() == s) {
+        if let Some(k) = SequenceKind::NAMED.into_iter().find(|k| k.name() == s) {
             return Ok(k);
         }
         let mut parts = s.split(':');
@@ -146,7 +217,7 @@ mod tests {
 
     #[test]
     fn names_parse_back_and_bad_parameters_are_named() {
-        let mut kinds = SequenceKind::ALL.to_vec();
+        let mut kinds = SequenceKind::NAMED.to_vec();
         let bases: Vec<u32> = SequenceKind::faure_all()
             .iter()
             .map(|k| k.base().base())

@@ -20,5 +20,5 @@ mod tables;
 pub use digital::DigitalSequence;
 pub use error::SeqError;
 pub use gray::{gray_code, GrayCodeIter};
-pub use kind::SequenceKind;
+pub use kind::{Provenance, SequenceKind};
 pub use tables::LookupTables;

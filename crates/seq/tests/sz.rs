@@ -4,31 +4,167 @@ use gartowen_core::Width;
 use gartowen_seq::field::{expand_gf4_matrix, gf16_mul, gf4_mul, SmallField, OMEGA};
 use gartowen_seq::{sobol, sz};
 
+/// A 32×32 binary matrix, `m[r][c]`, row 0 the most significant output bit.
+type Bits = [[u8; 32]; 32];
+
+/// binom(c, r) mod 2 for r, c < 32, by Pascal's rule (not Lucas, which production uses).
+fn pascal_mod2() -> Bits {
+    let mut b = [[0u8; 32]; 32];
+    for c in 0..32 {
+        b[0][c] = 1;
+        for r in 1..=c {
+            b[r][c] = b[r - 1][c - 1] ^ b[r][c - 1];
+        }
+    }
+    b
+}
+
+fn mul2(a: [[u8; 2]; 2], b: [[u8; 2]; 2]) -> [[u8; 2]; 2] {
+    let mut c = [[0u8; 2]; 2];
+    for (i, row) in c.iter_mut().enumerate() {
+        for (j, x) in row.iter_mut().enumerate() {
+            *x = (a[i][0] & b[0][j]) ^ (a[i][1] & b[1][j]);
+        }
+    }
+    c
+}
+
+const I2: [[u8; 2]; 2] = [[1, 0], [0, 1]];
+const ALPHA: [[u8; 2]; 2] = [[0, 1], [1, 1]];
+const BETA: [[u8; 2]; 2] = [[1, 1], [1, 0]];
+
+/// P4(x): 2×2 block (I, J) is x^(J−I) where binom(J, I) is odd, else 0; inside a block, row 0
+/// is the more significant output bit and column 0 the less significant index bit, so the
+/// block's entry (u, v) is the matrix's entry (2I + u, 2J + v). x^0 is the identity, for x = 0
+/// too.
+fn p4(x: [[u8; 2]; 2]) -> Bits {
+    let binom = pascal_mod2();
+    let mut m = [[0u8; 32]; 32];
+    for big_i in 0..16 {
+        for big_j in big_i..16 {
+            if binom[big_i][big_j] == 0 {
+                continue;
+            }
+            let block = (0..big_j - big_i).fold(I2, |acc, _| mul2(acc, x));
+            for u in 0..2 {
+                for v in 0..2 {
+                    m[2 * big_i + u][2 * big_j + v] = block[u][v];
+                }
+            }
+        }
+    }
+    m
+}
+
+fn mul32(a: &Bits, b: &Bits) -> Bits {
+    let mut c = [[0u8; 32]; 32];
+    for r in 0..32 {
+        for k in 0..32 {
+            if a[r][k] == 1 {
+                for col in 0..32 {
+                    c[r][col] ^= b[k][col];
+                }
+            }
+        }
+    }
+    c
+}
+
+/// diag(U, U, …) with U = [[1,1],[0,1]] on each 2-bit output digit.
+fn diag_u() -> Bits {
+    let mut m = [[0u8; 32]; 32];
+    for d in 0..16 {
+        m[2 * d][2 * d] = 1;
+        m[2 * d][2 * d + 1] = 1;
+        m[2 * d + 1][2 * d + 1] = 1;
+    }
+    m
+}
+
+/// Column c as a word, row 0 in the most significant bit.
+fn column_words(m: &Bits) -> Vec<u64> {
+    (0..32)
+        .map(|c| (0..32).fold(0u64, |w, r| w | ((m[r][c] as u64) << (31 - r))))
+        .collect()
+}
+
+fn add2(a: [[u8; 2]; 2], b: [[u8; 2]; 2]) -> [[u8; 2]; 2] {
+    [
+        [a[0][0] ^ b[0][0], a[0][1] ^ b[0][1]],
+        [a[1][0] ^ b[1][0], a[1][1] ^ b[1][1]],
+    ]
+}
+
 #[test]
-fn sz4_check_columns_from_the_design() {
+fn the_block_identities_of_the_published_quad_hold() {
+    // α² = β, α³ = I, I + α = β: {0, I, α, β} is GF(4).
+    assert_eq!(mul2(ALPHA, ALPHA), BETA);
+    assert_eq!(mul2(mul2(ALPHA, ALPHA), ALPHA), I2);
+    assert_eq!(add2(I2, ALPHA), BETA);
+    // The pair relation: P·P4(β) = diag(U)·P4(α).
+    let binary_pascal = pascal_mod2();
+    assert_eq!(
+        mul32(&binary_pascal, &p4(BETA)),
+        mul32(&diag_u(), &p4(ALPHA))
+    );
+    // Faure's group law: P4(a)·P4(b) = P4(a + b) for a, b in GF(4).
+    let field = [[[0u8; 2]; 2], I2, ALPHA, BETA];
+    for a in field {
+        for b in field {
+            assert_eq!(mul32(&p4(a), &p4(b)), p4(add2(a, b)), "{a:?} + {b:?}");
+        }
+    }
+}
+
+#[test]
+fn sz4_is_the_published_4d_sz_bit_for_bit() {
+    let dim2 = column_words(&p4(BETA));
+    let dim3 = column_words(&mul32(&pascal_mod2(), &p4(BETA)));
+    // The first columns, pinned as hex words (row 0 = MSB, W = 32).
+    assert_eq!(
+        dim2[..8],
+        [
+            0x80000000, 0x40000000, 0xe0000000, 0x90000000, 0x48000000, 0xc4000000, 0x9e000000,
+            0x79000000
+        ]
+    );
+    assert_eq!(
+        dim3[..8],
+        [
+            0x80000000, 0xc0000000, 0xe0000000, 0x70000000, 0x48000000, 0x8c000000, 0x9e000000,
+            0xe7000000
+        ]
+    );
     let s = sz::sz4(4, Width::W32).unwrap();
-    let dim2 = [
-        0x80000000u64,
-        0x40000000,
-        0x60000000,
-        0xd0000000,
-        0xc8000000,
-        0x84000000,
-        0xb6000000,
-        0x6d000000,
-    ];
-    let dim3 = [
-        0x80000000u64,
-        0xc0000000,
-        0x60000000,
-        0xb0000000,
-        0xc8000000,
-        0x4c000000,
-        0xb6000000,
-        0xdb000000,
-    ];
-    assert_eq!(&s.columns(2)[..8], &dim2);
-    assert_eq!(&s.columns(3)[..8], &dim3);
+    assert_eq!(s.columns(2), &dim2[..], "dimension 2 = P4(β)");
+    assert_eq!(s.columns(3), &dim3[..], "dimension 3 = P·P4(β)");
+    assert_eq!(
+        s.columns(1),
+        &column_words(&pascal_mod2())[..],
+        "dimension 1 = P"
+    );
+    // 64-bit words: the same matrices, continued (the top 32 rows of the first 32 columns
+    // are the 32-bit ones).
+    let wide = sz::sz4(4, Width::W64).unwrap();
+    for j in 0..4 {
+        for c in 0..32 {
+            assert_eq!(
+                wide.column(j, c) >> 32,
+                s.column(j, c),
+                "dim {j} column {c}"
+            );
+        }
+    }
+    // The earlier reconstruction differs in dimensions 2 and 3 only, from point 4 on.
+    let old = sz::sz4_faure(4, Width::W32).unwrap();
+    for j in 0..4 {
+        let first_differing = (0..64u64).find(|&n| old.point(n, j) != s.point(n, j));
+        assert_eq!(
+            first_differing,
+            [None, None, Some(4), Some(4)][j],
+            "dim {j}"
+        );
+    }
 }
 
 #[test]
