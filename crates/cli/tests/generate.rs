@@ -145,7 +145,9 @@ fn matrices_hex_and_json_carry_the_same_columns() {
     let hex = stdout(&gartowen(&["matrices", "--seq", "sz4", "--dims", "4"]));
     let lines: Vec<&str> = hex.lines().collect();
     assert_eq!(lines.len(), 4);
-    assert!(lines[2].starts_with("80000000 40000000 60000000 d0000000"));
+    // The published 4-D SZ: dimension 2 is P4(β), dimension 3 is P·P4(β).
+    assert!(lines[2].starts_with("80000000 40000000 e0000000 90000000"));
+    assert!(lines[3].starts_with("80000000 c0000000 e0000000 70000000"));
     let json: serde_json::Value = serde_json::from_str(&stdout(&gartowen(&[
         "matrices", "--seq", "sz4", "--dims", "4", "--format", "json",
     ])))
@@ -160,6 +162,34 @@ fn matrices_hex_and_json_carry_the_same_columns() {
         assert_eq!(cols.join(" "), *line);
     }
     assert_eq!(json["base"], 4);
+}
+
+#[test]
+fn list_sequences_states_each_sequences_provenance() {
+    let json: serde_json::Value =
+        serde_json::from_str(&stdout(&gartowen(&["list", "--sequences", "--json"]))).unwrap();
+    let provenance = |name: &str| {
+        json.as_array()
+            .unwrap()
+            .iter()
+            .find(|r| r["name"] == name)
+            .unwrap_or_else(|| panic!("{name} listed"))["provenance"]
+            .as_str()
+            .unwrap()
+            .to_string()
+    };
+    assert_eq!(provenance("sobol"), "published");
+    assert_eq!(provenance("sz4"), "third-party-derived");
+    assert_eq!(provenance("sz16"), "gartowen's own");
+    assert_eq!(provenance("sz16-faure"), "gartowen's own");
+    // Every listed fixed name parses back as a sequence.
+    for r in json.as_array().unwrap() {
+        let name = r["name"].as_str().unwrap();
+        if !name.contains('=') {
+            let m = gartowen(&["matrices", "--seq", name, "--dims", "2"]);
+            assert_eq!(m.status.code(), Some(0), "{name}");
+        }
+    }
 }
 
 #[test]

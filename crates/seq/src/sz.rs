@@ -66,27 +66,94 @@ fn quad_parameters(alpha: &[u32; 4], j: usize) -> (u32, Gf2Matrix) {
     (alpha[j], d)
 }
 
-/// The field element a_j = α_k² + β·y and output transform D_j of sz16 dimension j = 4β + k,
-/// α_k = (0, 1, ω², ω)[k].
+/// The field element and output transform of sz16 dimension j = 4β + k: member k of quad β
+/// of [`SZ16_QUADS`].
 pub fn sz16_parameters(j: usize) -> (u32, Gf2Matrix) {
-    ensemble_parameters(&ALPHA, j)
+    SZ16_QUADS[j / 4].member(j % 4)
 }
 
-/// [`sz16_parameters`] of the earlier reconstruction `sz16-faure`: α_k = (0, 1, ω, ω²)[k].
+/// [`sz16_parameters`] of the earlier reconstruction `sz16-faure`: quad β is the alphabet
+/// (0, 1, ω, ω²) in coset γ = β·y, no outer transform.
 pub fn sz16_faure_parameters(j: usize) -> (u32, Gf2Matrix) {
-    ensemble_parameters(&ALPHA_FAURE, j)
+    QuadChoice {
+        alphabet: ALPHA_FAURE,
+        gamma: ((j / 4) as u32) << 2,
+        outer: IDENTITY_2,
+    }
+    .member(j % 4)
 }
 
-fn ensemble_parameters(alphas: &[u32; 4], j: usize) -> (u32, Gf2Matrix) {
-    let (beta, k) = ((j / 4) as u32, j % 4);
-    let alpha = alphas[k];
-    let a = gf4_mul(alpha, alpha) | (beta << 2);
-    let e = e_matrix(alpha);
-    // U on each 2-bit half for the odd dimensions of a quad (the Pascal-image member of each
-    // binary pair), as in the quad.
-    let d = if k % 2 == 1 { uu_matrix().mul(&e) } else { e };
-    (a, d)
+/// One quad of a 16-D ensemble: a GF(4) alphabet (α_0..α_3), a coset γ of GF(4) in GF(16),
+/// and a 2×2 binary matrix g applied to each 2-bit half of every output digit.
+///
+/// Member k has a = α_k² + γ (addition in GF(16) is XOR of the encodings) and output
+/// transform blockdiag(g,g)·D_k, D_k = blockdiag(U,U)·E(α_k) for odd k, else E(α_k), where
+/// E(α) is the binary expansion of the GF(4) matrix [[1, α], [0, 1]]. Every γ keeps the
+/// quad's properties (its matrices are those of γ = 0 times the same Faure matrix P16(γ) on
+/// the right, which keeps the span of every set of leading columns); g keeps base-4 and
+/// base-16 nets (a bijection of each base-4 output digit), and the binary pairs are checked.
+/// The quads of one ensemble need γ's with distinct y-coefficients.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct QuadChoice {
+    /// α_0..α_3 in GF(4): [`SZ_ALPHABET`] or [`FAURE_ALPHABET`].
+    pub alphabet: [u32; 4],
+    /// γ in GF(16) (the encoding of [`crate::field`]).
+    pub gamma: u32,
+    /// g, packed as by `Gf2Matrix::packed` (2×2, invertible).
+    pub outer: u64,
 }
+
+impl QuadChoice {
+    /// The GF(16) element and the 4×4 output transform of member k (0..4).
+    pub fn member(&self, k: usize) -> (u32, Gf2Matrix) {
+        let alpha = self.alphabet[k];
+        let a = gf4_mul(alpha, alpha) ^ self.gamma;
+        let e = e_matrix(alpha);
+        // U on each 2-bit half for the odd member of each binary pair, as in the quad.
+        let d = if k % 2 == 1 { uu_matrix().mul(&e) } else { e };
+        let g = Gf2Matrix::from_packed(2, self.outer).expect("a 2×2 matrix");
+        let gg = Gf2Matrix::from_rows(4, &[g.row(0), g.row(1), g.row(0) << 2, g.row(1) << 2])
+            .expect("4×4");
+        (a, gg.mul(&d))
+    }
+}
+
+/// The published quad's alphabet (0, 1, ω², ω).
+pub const SZ_ALPHABET: [u32; 4] = ALPHA;
+/// The earlier reconstruction's alphabet (0, 1, ω, ω²).
+pub const FAURE_ALPHABET: [u32; 4] = ALPHA_FAURE;
+
+/// The identity, packed.
+const IDENTITY_2: u64 = 0x0201;
+/// U = [[1,1],[0,1]], packed.
+const U_2: u64 = 0x0103;
+
+/// sz16's quads. Quad 0 is the published 4-D SZ. Quads 1–3 are gartowen's own, found by
+/// `crates/netcheck/examples/sz16_search.rs` over every alphabet, coset and g that keep the
+/// stated properties: the worst binary t-value over all 120 pairs and every m ≤ 16 is 5 (the
+/// earlier construction had 6), reached by 24 pairs (record/2026-12-03-sz.md).
+pub const SZ16_QUADS: [QuadChoice; 4] = [
+    QuadChoice {
+        alphabet: ALPHA,
+        gamma: 0,
+        outer: IDENTITY_2,
+    },
+    QuadChoice {
+        alphabet: ALPHA,
+        gamma: 6,
+        outer: U_2,
+    },
+    QuadChoice {
+        alphabet: ALPHA,
+        gamma: 9,
+        outer: U_2,
+    },
+    QuadChoice {
+        alphabet: ALPHA,
+        gamma: 15,
+        outer: IDENTITY_2,
+    },
+];
 
 fn build(
     name: &str,

@@ -20,10 +20,14 @@ pub enum MatrixFormat {
 /// Print generator matrices: column c of dimension j is a W-bit word whose top bit is row 0.
 ///
 /// Point n of dimension j is the XOR of columns c over the set bits c of n (bit 0 = LSB).
-/// Example: gartowen matrices --seq sz4 --dims 4 --format hex
+/// sz4 is the published 4-D SZ (dimensions I, P, P4(β), P·P4(β)); sz16's first quad is sz4,
+/// its other three quads and the ensemble are gartowen's own construction (searched for the
+/// best binary pairs across quads). `gartowen list --sequences` shows every sequence's
+/// provenance. Example: gartowen matrices --seq sz4 --dims 4 --format hex
 #[derive(Args, Debug)]
 pub struct MatricesArgs {
-    /// Sequence: sobol, sz4, sz16, faure:base=B or faure-net:base=B:m=M.
+    /// Sequence: sobol, sz4, sz16, faure:base=B or faure-net:base=B:m=M (sz4-faure and
+    /// sz16-faure: the earlier reconstructions, for reproducing older results).
     #[arg(long)]
     pub seq: String,
     /// Number of dimensions.
@@ -65,6 +69,7 @@ pub fn run(a: MatricesArgs) -> Result<ExitCode, CliError> {
                 "base": kind.base().base(),
                 "bits": width.bits(),
                 "index_bits": seq.index_bits(),
+                "provenance": {"kind": kind.provenance().label(), "source": kind.provenance().source()},
                 "convention": "column c of dimension j is a W-bit word, row 0 in the most significant bit; x_j(n) = XOR of columns c over set bits c of n",
                 "dims": (0..seq.dims()).map(|j| serde_json::json!({"dim": j, "columns": hex_columns(j)})).collect::<Vec<_>>(),
             });
