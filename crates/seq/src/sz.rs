@@ -125,8 +125,8 @@ pub const FAURE_ALPHABET: [u32; 4] = ALPHA_FAURE;
 
 /// The identity, packed.
 const IDENTITY_2: u64 = 0x0201;
-/// U = [[1,1],[0,1]], packed.
-const U_2: u64 = 0x0103;
+/// β = [[1,1],[1,0]] (multiplication by ω² in GF(4)), packed.
+const BETA_2: u64 = 0x0103;
 
 /// sz16's quads. Quad 0 is the published 4-D SZ. Quads 1–3 are gartowen's own, found by
 /// `crates/netcheck/examples/sz16_search.rs` over every alphabet, coset and g that keep the
@@ -141,12 +141,12 @@ pub const SZ16_QUADS: [QuadChoice; 4] = [
     QuadChoice {
         alphabet: ALPHA,
         gamma: 6,
-        outer: U_2,
+        outer: BETA_2,
     },
     QuadChoice {
         alphabet: ALPHA,
         gamma: 9,
-        outer: U_2,
+        outer: BETA_2,
     },
     QuadChoice {
         alphabet: ALPHA,

@@ -257,3 +257,47 @@ fn dimension_limits() {
     assert!(sz::sz16(17, Width::W32).is_err());
     assert!(sz::sz16(0, Width::W32).is_err());
 }
+
+#[test]
+fn sz4_faure_keeps_the_earlier_check_columns() {
+    let s = sz::sz4_faure(4, Width::W32).unwrap();
+    let dim2 = [
+        0x80000000u64,
+        0x40000000,
+        0x60000000,
+        0xd0000000,
+        0xc8000000,
+        0x84000000,
+        0xb6000000,
+        0x6d000000,
+    ];
+    let dim3 = [
+        0x80000000u64,
+        0xc0000000,
+        0x60000000,
+        0xb0000000,
+        0xc8000000,
+        0x4c000000,
+        0xb6000000,
+        0xdb000000,
+    ];
+    assert_eq!(&s.columns(2)[..8], &dim2);
+    assert_eq!(&s.columns(3)[..8], &dim3);
+    // sz16-faure's first quad is sz4-faure, as sz16's is sz4.
+    let q = sz::sz16_faure(4, Width::W32).unwrap();
+    for j in 0..4 {
+        assert_eq!(q.columns(j), s.columns(j), "dim {j}");
+    }
+}
+
+#[test]
+fn the_packed_outer_transforms_are_the_identity_and_beta() {
+    use gartowen_core::Gf2Matrix;
+    let outers: Vec<u64> = sz::SZ16_QUADS.iter().map(|q| q.outer).collect();
+    let id = Gf2Matrix::identity(2).unwrap().packed();
+    // β = [[1,1],[1,0]]: row 0 = (1, 1), row 1 = (1, 0), bit j of a row = column j.
+    let beta = Gf2Matrix::from_rows(2, &[0b11, 0b01]).unwrap().packed();
+    assert_eq!(SmallField::Gf4.mult_matrix(3).packed(), beta, "β = M4(ω²)");
+    assert!(outers.iter().all(|&o| o == id || o == beta), "{outers:x?}");
+    assert_eq!(outers[0], id, "quad 0 is sz4 itself");
+}
