@@ -44,11 +44,20 @@ pub fn judge_families(
                     );
                 }
             }
+            // The worst sub-test among those the verdict rests on (the judged ones when the
+            // claim covers any): a pass is never explained by a sub-test it did not judge.
+            let judged_of = |t: &SubTest| !any_claimed || t.requires.claimed_by(claim);
             let worst = tests
                 .iter()
+                .filter(|t| judged_of(t))
                 .min_by(|a, b| a.p_value.total_cmp(&b.p_value))
                 .cloned();
-            let deviations = tests.iter().filter(|t| t.deviates).count();
+            let count = |judged: bool| {
+                let of: Vec<&SubTest> = tests.iter().filter(|t| judged_of(t) == judged).collect();
+                (of.iter().filter(|t| t.deviates).count(), of.len())
+            };
+            let (deviations, judged_tests) = count(true);
+            let (measured_deviations, measured_tests) = count(false);
             let verdict = if !any_claimed {
                 Verdict::Measured
             } else if judged_fail {
@@ -58,22 +67,32 @@ pub fn judge_families(
             };
             let detail = match &worst {
                 None => "not applicable".to_string(),
-                Some(w) => format!(
-                    "{}: {} of {} sub-tests deviate at α' = {:.1e}; worst: {} (p = {:.2e}; {})",
-                    if verdict == Verdict::Pass {
-                        "no deviation detected at this power"
-                    } else if verdict == Verdict::Fail {
-                        "deviation"
-                    } else {
-                        "not claimed, measured"
-                    },
-                    deviations,
-                    tests.len(),
-                    if any_claimed { alpha } else { measure_alpha },
-                    w.name,
-                    w.p_value,
-                    w.power
-                ),
+                Some(w) => {
+                    let mut d = format!(
+                        "{}: {} of {} {}sub-tests deviate at α' = {:.1e}; worst: {} (p = {:.2e}; {})",
+                        if verdict == Verdict::Pass {
+                            "no deviation detected at this power"
+                        } else if verdict == Verdict::Fail {
+                            "deviation"
+                        } else {
+                            "not claimed, measured"
+                        },
+                        deviations,
+                        judged_tests,
+                        if any_claimed && measured_tests > 0 { "judged " } else { "" },
+                        if any_claimed { alpha } else { measure_alpha },
+                        w.name,
+                        w.p_value,
+                        w.power
+                    );
+                    if measured_tests > 0 {
+                        d.push_str(&format!(
+                            "; not claimed, measured: {measured_deviations} of {measured_tests} \
+                             deviate at α' = {measure_alpha:.1e}"
+                        ));
+                    }
+                    d
+                }
             };
             CheckResult {
                 check: family.into(),
@@ -122,4 +141,69 @@ pub fn profile(checks: &[CheckResult]) -> Vec<(String, String)> {
             (c.check.clone(), row)
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::subtest::Requirement;
+    use gartowen_core::NodeGroup;
+
+    fn sub(name: &str, requires: Requirement, p_value: f64) -> SubTest {
+        SubTest {
+            name: name.into(),
+            depth: Some(0),
+            requires,
+            statistic: 1.0,
+            p_value,
+            n: 100,
+            dof: None,
+            power: "exact".into(),
+            deviates: false,
+        }
+    }
+
+    #[test]
+    fn a_pass_is_explained_by_the_sub_tests_it_judged_not_by_measured_ones() {
+        let tests = vec![
+            sub("marginal", Requirement::Marginal, 0.5),
+            sub("joint", Requirement::Independent, 0.0),
+        ];
+        let claim = Claim::marginal(NodeGroup::Symmetric);
+        let c = &judge_families(vec![("family", tests.clone())], claim, 1, 0.0)[0];
+        assert_eq!(c.verdict, Verdict::Pass);
+        assert_eq!(c.p_value, Some(0.5), "the worst judged sub-test");
+        assert!(
+            c.detail.starts_with(
+                "no deviation detected at this power: 0 of 1 judged sub-tests deviate"
+            ),
+            "{}",
+            c.detail
+        );
+        assert!(c.detail.contains("worst: marginal"), "{}", c.detail);
+        assert!(
+            c.detail.contains("not claimed, measured: 1 of 1 deviate"),
+            "{}",
+            c.detail
+        );
+        // Claimed in full, the same sub-tests fail, and the worst is the joint one.
+        let c = &judge_families(vec![("family", tests.clone())], Claim::OWEN, 1, 0.0)[0];
+        assert_eq!(c.verdict, Verdict::Fail);
+        assert_eq!(c.p_value, Some(0.0));
+        assert!(
+            c.detail.starts_with("deviation: 1 of 2 sub-tests deviate"),
+            "{}",
+            c.detail
+        );
+        assert!(!c.detail.contains("measured"), "{}", c.detail);
+        // Claimed not at all: measured, every sub-test counted.
+        let c = &judge_families(vec![("family", tests)], Claim::NESTED, 1, 0.0)[0];
+        assert_eq!(c.verdict, Verdict::Measured);
+        assert!(
+            c.detail
+                .starts_with("not claimed, measured: 1 of 2 sub-tests deviate"),
+            "{}",
+            c.detail
+        );
+    }
 }
