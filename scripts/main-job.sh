@@ -23,7 +23,8 @@ expect_fail() {
     echo "unexpected: '$*' passed" >&2
     exit 1
   fi
-  grep -m1 "FAIL" "$out/last_expected_failure.txt"
+  # The imitations must fail: say so, so that a FAIL row here reads as a success.
+  echo "expected failure (an imitation judged as Owen): $(grep -m1 "FAIL" "$out/last_expected_failure.txt")"
 }
 expect_fail $g verify --impl digital-shift --impl lk-hash --impl lk-hash-improved --impl lms-shift --claim owen \
   --json "$out/verify_imitations.json"
@@ -48,7 +49,7 @@ if $g inspect --scramble owen-oracle:base=16 --base 2 --width 16 --seed 1 > "$ou
   echo "unexpected: a base-16 Owen scramble passed as binary-nested" >&2
   exit 1
 fi
-echo "expected: $(head -1 "$out/inspect_base2.txt")"
+echo "expected failure (base 16 is not nested in base 2): $(head -1 "$out/inspect_base2.txt")"
 # Speed against error, quick: report.md, report.json and figures.
 $g report --quick --out "$out/report"
 echo "reports in $out/"
