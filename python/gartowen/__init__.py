@@ -9,8 +9,12 @@ Conventions (the same as the ``gartowen`` command line):
   are not multiples of 2^-64 are refused with ``ValueError``. Words become float64 by
   truncation to 53 bits, so a value is never 1.0.
 * Base-b digit k (k = 0 most significant) of a W-bit word is bits [W - q(k+1), W - qk).
-* Discrepancies are squared (D^2) unless ``root=True``. (SciPy's ``qmc.discrepancy`` returns D
-  for L2-star but D^2 for CD and WD.)
+* Discrepancies are squared (D^2) unless ``root=True``. SciPy's ``qmc.discrepancy`` returns D
+  for L2-star but D^2 for CD and WD: ``discrepancy(x, "L2-star", scipy_convention=True)``
+  answers in SciPy's convention, so the numbers compare one to one.
+* SciPy's spellings are accepted where they mean the same thing: ``d=`` for ``dims``,
+  ``scramble=False``, the kinds ``"L2-star"``, ``"CD"``, ``"WD"`` (also as ``method=``).
+  Where they do not (``scramble=True``, ``"MD"``), the error names the gartowen equivalent.
 
 Bad arguments raise ``TypeError`` (wrong type or dtype) or ``ValueError`` (wrong value), with
 the messages the command line prints. Long work runs with the GIL released.
@@ -104,10 +108,11 @@ def _array(points: Any, name: str = "points") -> np.ndarray:
 
 def generate(
     seq: str,
-    dims: int,
-    n: int,
+    dims: Optional[int] = None,
+    n: Optional[int] = None,
     *,
-    scramble: Optional[str] = None,
+    d: Optional[int] = None,
+    scramble: Union[str, bool, None] = None,
     seed: int = 0,
     base: Optional[int] = None,
     bits: int = 32,
@@ -121,10 +126,13 @@ def generate(
         seq: ``"sobol"`` (base 2, Joe-Kuo new-joe-kuo-6.21201, 21201 dims), ``"sz4"`` (base 4,
             4 dims), ``"sz16"`` (base 16, 16 dims), ``"faure:base=B"`` (B = 2, 4, ..., 256;
             B dims) or ``"faure-net:base=B:m=M"`` (B + 1 dims, a net of its first B^M points).
-        dims: number of dimensions.
+        dims: number of dimensions (``d=`` as in SciPy is the same).
         n: number of points (at least 1).
         scramble: registry scrambler ``NAME[:OPTION...]`` (see :func:`list_scramblers`);
-            None for the plain sequence.
+            None or False for the plain sequence. ``True`` is refused: name the scramble
+            (``"owen-oracle"`` for Owen's nested uniform scramble; SciPy's
+            ``Sobol(scramble=True)`` is a random linear matrix scramble with a digital shift,
+            ``"lms-shift"`` here).
         seed: the scrambler's seed, an integer in [0, 2^64).
         base: scrambling base for scramblers whose base is a parameter (default: the
             sequence's own); a base the scrambler does not take (a fixed base, or its
@@ -140,9 +148,22 @@ def generate(
         what ``gartowen generate`` writes for the same arguments.
     """
     seq = _string("seq", seq)
+    if d is not None:
+        if dims is not None:
+            raise TypeError("give dims or d (SciPy's name for it), not both")
+        dims = d
+    if dims is None or n is None:
+        raise TypeError("generate() needs dims (or d=) and n, e.g. generate('sobol', d=2, n=64)")
     dims = _integer("dims", dims, 1, 1 << 31)
     n = _integer("n", n)
-    name = "none" if scramble is None else _string("scramble", scramble)
+    if scramble is True:
+        raise ValueError(
+            "scramble=True does not say which scramble: name it, e.g. scramble='owen-oracle' "
+            "(Owen's nested uniform scramble) or scramble='lms-shift' (what SciPy's "
+            "Sobol(scramble=True) does: a random linear matrix scramble with a digital shift); "
+            "gartowen.list_scramblers() lists them all"
+        )
+    name = "none" if scramble is None or scramble is False else _string("scramble", scramble)
     seed = _integer("seed", seed)
     base = _optional_integer("base", base)
     bits = _integer("bits", bits)
@@ -333,6 +354,26 @@ def _discrepancy_result(r: Dict[str, Any], cert: Optional[Dict[str, Any]] = None
     )
 
 
+# SciPy's names of the discrepancy kinds (``qmc.discrepancy(method=...)``), and gartowen's.
+_SCIPY_KINDS = {"l2-star": "l2star", "cd": "cd", "wd": "wd"}
+_KINDS = ("l2star", "cd", "wd", "gl2")
+
+
+def _kind(kind: str) -> str:
+    """gartowen's name of a discrepancy kind given in gartowen's or SciPy's spelling."""
+    lowered = kind.lower()
+    if lowered in _KINDS:
+        return lowered
+    if lowered in _SCIPY_KINDS:
+        return _SCIPY_KINDS[lowered]
+    if lowered == "md":
+        raise ValueError(
+            "the mixture discrepancy (SciPy's 'MD') is not implemented; use 'l2star', 'cd' "
+            "(SciPy's 'CD'), 'wd' (SciPy's 'WD') or 'gl2'"
+        )
+    return kind  # unknown: the native layer names the choices
+
+
 def discrepancy(
     points: Any,
     kind: str = "l2star",
@@ -340,6 +381,7 @@ def discrepancy(
     *,
     root: bool = False,
     pairs: Optional[str] = None,
+    scipy_convention: bool = False,
 ) -> DiscrepancyResult:
     """The squared discrepancy D^2 of a point set: L2-star, centered, wrap-around or generalized L2.
 
@@ -350,12 +392,16 @@ def discrepancy(
 
     Args:
         points: float64 values in [0, 1) or uint32/uint64 words, shape (n, dims) or (n,).
-        kind: ``"l2star"``, ``"cd"``, ``"wd"`` or ``"gl2"``.
+        kind: ``"l2star"``, ``"cd"``, ``"wd"`` or ``"gl2"`` (SciPy's ``"L2-star"``, ``"CD"``
+            and ``"WD"`` too, in any case).
         method: ``"auto"``, ``"naive"``, ``"compensated"``, ``"exact"`` or ``"fast"`` (2-D
-            L2-star only). ``"compensated"`` reports the error bound proved in the project's
+            L2-star only). A SciPy kind name here (``method="CD"``, as in
+            ``qmc.discrepancy``) is read as the kind. ``"compensated"`` reports the error bound proved in the project's
             Coq theory ``proofs/DdSum.v``; where its hypotheses (coordinates of at most 50
             bits, no overflow or underflow) fail, it computes exactly instead.
         root: report D instead of D^2.
+        scipy_convention: report what ``scipy.stats.qmc.discrepancy`` reports: D for L2-star,
+            D^2 for CD and WD (overrides ``root``).
         pairs: also report 2-D values of pairs of dimensions: ``"first"`` (0 with each other)
             or ``"all"``.
 
@@ -366,6 +412,16 @@ def discrepancy(
     # The native layer names unknown kinds and methods with the choices (one vocabulary).
     kind = _string("kind", kind)
     method = _string("method", method)
+    if method.lower() in _SCIPY_KINDS or method.lower() == "md":
+        if kind != "l2star":
+            raise ValueError(
+                f"method={method!r} is SciPy's name of a kind, and kind={kind!r} is given too; "
+                "give the kind once (kind=...), and method= for the algorithm"
+            )
+        kind, method = method, "auto"
+    kind = _kind(kind)
+    if scipy_convention:
+        root = kind == "l2star"
     if pairs is not None:
         pairs = _choice("pairs", pairs, ("first", "all"))
     cert = json.loads(_native.discrepancy(array, kind, method, bool(root), pairs))

@@ -297,8 +297,7 @@ fn verify(
     let level_value: Level = level
         .parse()
         .map_err(|e| PyValueError::new_err(format!("{e}")))?;
-    let claim_value =
-        Claim::parse(claim).map_err(|e| PyValueError::new_err(format!("claims {claim}: {e}")))?;
+    let claim_value = Claim::parse(claim).map_err(|e| PyValueError::new_err(e.to_string()))?;
     let registry = gartowen::registry();
     if let Some(twin) = &expect {
         let s = registry

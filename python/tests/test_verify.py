@@ -108,7 +108,7 @@ def test_words_and_arguments_the_function_gets():
         (dict(base=3, width=32), ValueError, "base"),
         (dict(base=2, width=16), ValueError, "width 16"),
         (dict(base=2, width=32, level="slow"), ValueError, "unknown level 'slow'; use quick, full or exhaustive"),
-        (dict(base=2, width=32, claims="random"), ValueError, "claims random"),
+        (dict(base=2, width=32, claims="random"), ValueError, "unknown claim 'random'"),
         (dict(base=2, width=32, expect="nope"), ValueError, "nope"),
         (dict(base=2, width=32, expect="art-owen-16p"), ValueError, "base 16"),
         (dict(base=2, width=32, seed=-1), ValueError, "negative"),

@@ -172,23 +172,23 @@ impl Claim {
     /// assert!(Claim::parse("uniformish").is_err());
     /// ```
     pub fn parse(text: &str) -> Result<Claim, CoreError> {
-        let bad = || CoreError::InvalidOption {
-            scrambler: "claim".into(),
-            option: text.into(),
-            reason: "expected nested, owen, marginal[:GROUP] or independent:GROUP \
-                     (GROUP: symmetric, affine, translation, cyclic)"
-                .into(),
-        };
+        Claim::parse_exact(text).ok_or_else(|| CoreError::InvalidClaim {
+            text: text.into(),
+            lower_case: Claim::parse_exact(&text.to_lowercase()).map(|c| c.to_string()),
+        })
+    }
+
+    fn parse_exact(text: &str) -> Option<Claim> {
         let (head, group) = match text.split_once(':') {
-            Some((h, g)) => (h, Some(NodeGroup::parse(g).ok_or_else(bad)?)),
+            Some((h, g)) => (h, Some(NodeGroup::parse(g)?)),
             None => (text, None),
         };
         match (head, group) {
-            ("nested", None) => Ok(Claim::NESTED),
-            ("owen", None) => Ok(Claim::OWEN),
-            ("marginal", g) => Ok(Claim::marginal(g.unwrap_or(NodeGroup::Symmetric))),
-            ("independent", Some(g)) => Ok(Claim::independent_over(g)),
-            _ => Err(bad()),
+            ("nested", None) => Some(Claim::NESTED),
+            ("owen", None) => Some(Claim::OWEN),
+            ("marginal", g) => Some(Claim::marginal(g.unwrap_or(NodeGroup::Symmetric))),
+            ("independent", Some(g)) => Some(Claim::independent_over(g)),
+            _ => None,
         }
     }
 }
@@ -208,6 +208,36 @@ impl fmt::Display for Claim {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_bad_claim_is_named_and_a_wrongly_cased_one_gets_its_spelling() {
+        let e = Claim::parse("Owen").unwrap_err();
+        assert_eq!(
+            e,
+            CoreError::InvalidClaim {
+                text: "Owen".into(),
+                lower_case: Some("owen".into())
+            }
+        );
+        assert_eq!(
+            e.to_string(),
+            "unknown claim 'Owen'; claims are lower case: 'owen'"
+        );
+        assert_eq!(
+            Claim::parse("Marginal:Affine").unwrap_err().to_string(),
+            "unknown claim 'Marginal:Affine'; claims are lower case: 'marginal:affine'"
+        );
+        let e = Claim::parse("uniformish").unwrap_err().to_string();
+        assert!(
+            e.starts_with("unknown claim 'uniformish'; use nested, owen"),
+            "{e}"
+        );
+        assert!(
+            Claim::parse("independent").is_err(),
+            "independent needs a group"
+        );
+        assert!(Claim::parse("marginal:bogus").is_err());
+    }
 
     #[test]
     fn symbols_name_the_group_in_its_base() {

@@ -48,6 +48,13 @@ pub enum CoreError {
         /// The registry's names.
         known: Vec<String>,
     },
+    /// A claim that does not parse ([`crate::Claim::parse`]).
+    InvalidClaim {
+        /// The text given.
+        text: String,
+        /// The claim it would be in lower case, if any (claims are lower case).
+        lower_case: Option<String>,
+    },
     /// A scrambler option that the named scrambler does not accept, or a bad value.
     InvalidOption {
         /// The scrambler's name.
@@ -93,6 +100,14 @@ impl fmt::Display for CoreError {
                 option,
                 reason,
             } => write!(f, "scrambler '{scrambler}': option '{option}': {reason}"),
+            CoreError::InvalidClaim { text, lower_case } => match lower_case {
+                Some(lower) => write!(f, "unknown claim '{text}'; claims are lower case: '{lower}'"),
+                None => write!(
+                    f,
+                    "unknown claim '{text}'; use nested, owen, marginal[:GROUP] or \
+                     independent:GROUP (GROUP: symmetric, affine, translation, cyclic)"
+                ),
+            },
         }
     }
 }

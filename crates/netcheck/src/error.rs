@@ -93,7 +93,7 @@ impl fmt::Display for NetError {
             NetError::NotAPowerOfBase { n, base } => {
                 write!(
                     f,
-                    "{n} points is not a power of the base {base}; give --m or use b^m points"
+                    "{n} points is not a power of the base {base}; state m (the command line's --m, Python's m=) or use b^m points"
                 )
             }
             NetError::WrongCount { n, base, m } => {
