@@ -297,33 +297,39 @@ pub fn loglog_lines_banded(
 }
 
 /// Log-log points (one per series, its first point): the speed-against-error picture. Every
-/// point is drawn; only series whose label is in `labelled` get their name written beside it.
+/// point carries its number, and the legend names each number (the points crowd, so names
+/// beside them would overlap).
 pub fn loglog_points(
     path: &Path,
     title: &str,
     x_desc: &str,
     y_desc: &str,
     points: &[Series],
-    labelled: &[&str],
 ) -> Result<(), FigureError> {
     register_fonts();
     let root = BitMapBackend::new(path, (900, 620)).into_drawing_area();
     let mut chart = log_log_chart(&root, title, x_desc, y_desc, points, 3.0)?;
     for (i, s) in points.iter().enumerate() {
         let c = color(i);
-        let label = if labelled.contains(&s.label.as_str()) {
-            s.label.clone()
-        } else {
-            String::new()
-        };
+        let number = (i + 1).to_string();
         chart
             .draw_series(s.points.iter().take(1).map(|&p| {
                 EmptyElement::at(p)
                     + Circle::new((0, 0), 4, c.filled())
-                    + Text::new(label.clone(), (6, -6), (FONT, 12).into_font())
+                    + Text::new(number.clone(), (6, -6), (FONT, 12).into_font())
             }))
-            .map_err(fail)?;
+            .map_err(fail)?
+            .label(format!("{}: {}", i + 1, s.label))
+            .legend(move |(x, y)| Circle::new((x, y), 4, c.filled()));
     }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font((FONT, 11))
+        .draw()
+        .map_err(fail)?;
     root.present().map_err(fail)
 }
 

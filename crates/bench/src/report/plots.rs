@@ -16,17 +16,6 @@ const FIGURE_METHODS: [&str; 9] = [
 ];
 
 /// The methods named in the efficiency figures (all methods are drawn).
-const EFFICIENCY_LABELS: [&str; 8] = [
-    "random",
-    "sobol+none",
-    "sobol+owen-oracle:base=2",
-    "sobol+art-owen-2",
-    "sobol+lk-hash",
-    "sobol+owen-per-bit-hash",
-    "sz16+art-owen-16p",
-    "sz16+owen-oracle:base=16",
-];
-
 /// The integrands with RMSE figures.
 const FIGURE_INTEGRANDS: [&str; 6] = [
     "heaviside",
@@ -104,7 +93,6 @@ pub fn write_figures(
             "time per point (ns, 4 coordinates)",
             "RMSE",
             &pts,
-            &EFFICIENCY_LABELS,
         )
         .map_err(fig)?;
         files.push(name);
@@ -115,8 +103,8 @@ pub fn write_figures(
     // (j, j+1) side by side across methods. One realisation's spectrum is noise.
     let methods = [
         ("unscrambled", "none"),
-        ("ArtOwen2", "art-owen-2"),
-        ("ArtOwen16P", "art-owen-16p"),
+        ("art-owen-2", "art-owen-2"),
+        ("art-owen-16p", "art-owen-16p"),
     ];
     for n in [256usize, 512] {
         let pairs: Vec<[usize; 2]> = (0..7).map(|j| [j, j + 1]).collect();
