@@ -216,6 +216,27 @@ mod tests {
     use super::*;
 
     #[test]
+    fn provenance_says_which_sequences_are_published_and_which_are_ours() {
+        let of = |k: SequenceKind| (k.provenance().label(), k.provenance().source());
+        assert_eq!(of(SequenceKind::Sobol).0, "published");
+        assert!(of(SequenceKind::Sobol).1.contains("Joe–Kuo"));
+        assert_eq!(of(SequenceKind::Sz4).0, "third-party-derived");
+        assert!(of(SequenceKind::Sz4)
+            .1
+            .contains("Ahmed, Pharr, Ostromoukhov, Huang"));
+        for k in [
+            SequenceKind::Sz16,
+            SequenceKind::Sz4Faure,
+            SequenceKind::Sz16Faure,
+        ] {
+            assert_eq!(of(k).0, "gartowen's own", "{}", k.name());
+        }
+        assert!(of(SequenceKind::Sz16).1.contains("first quad the 4-D SZ"));
+        assert!(of(SequenceKind::Sz16Faure).1.contains("earlier"));
+        assert_eq!(of(SequenceKind::Faure(PowerOfTwoBase::B8)).0, "published");
+    }
+
+    #[test]
     fn names_parse_back_and_bad_parameters_are_named() {
         let mut kinds = SequenceKind::NAMED.to_vec();
         let bases: Vec<u32> = SequenceKind::faure_all()

@@ -190,6 +190,20 @@ fn sz16_first_quad_reproduces_sz4_exactly() {
 }
 
 #[test]
+fn sz16_faure_uses_all_sixteen_field_elements_in_its_own_order() {
+    // The earlier construction: quad β holds α_k² + β·y, the alphabet (0, 1, ω, ω²).
+    for j in 0..16 {
+        let (beta, k) = ((j / 4) as u32, j % 4);
+        let alpha = [0, 1, OMEGA, 3][k];
+        assert_eq!(
+            sz::sz16_faure_parameters(j).0,
+            gf4_mul(alpha, alpha) | (beta << 2),
+            "dim {j}"
+        );
+    }
+}
+
+#[test]
 fn sz16_uses_all_sixteen_field_elements() {
     let mut seen = [false; 16];
     for j in 0..16 {
