@@ -55,9 +55,27 @@ fn two_shards_of_a_dimension_merge_into_a_certificate_of_every_32_bit_word() {
     let a = shard(dir.path(), "a.json", "2", "1/2");
     let b = shard(dir.path(), "b.json", "2", "2/2");
     let all = dir.path().join("all.json");
-    let o = gartowen(&["verify", "--merge", &b, &a, "--json", all.to_str().unwrap()]);
+    let xml = dir.path().join("all.xml");
+    let o = gartowen(&[
+        "verify",
+        "--merge",
+        &b,
+        &a,
+        "--json",
+        all.to_str().unwrap(),
+        "--junit",
+        xml.to_str().unwrap(),
+    ]);
     assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
     assert!(stdout(&o).contains("=> bijective and nested on all 2^32 words, dimension 2, base 2"));
+    // The merge writes the JUnit it is asked for (CI dashboards read it): a case per piece.
+    let junit = std::fs::read_to_string(&xml).expect("the merge writes --junit");
+    assert!(junit.contains("testsuite name=\"lk-hash\""), "{junit}");
+    assert!(
+        junit.contains("dim 2 chunks 0..2048") && junit.contains("dim 2 chunks 2048..4096"),
+        "{junit}"
+    );
+    assert!(!junit.contains("<failure"), "{junit}");
     let v: serde_json::Value = serde_json::from_slice(&std::fs::read(&all).unwrap()).unwrap();
     assert_eq!(v["verdict"], "pass");
     let imp = &v["result"]["implementations"][0];
@@ -189,6 +207,30 @@ fn external_programs_are_swept_over_pipes_and_a_broken_one_is_named() {
         stdout(&o).contains("FAIL not nested: inputs 0x600000 and 0x600001 share 31 digit(s)"),
         "{}",
         stdout(&o)
+    );
+    // Its JUnit names the failing piece and the first failing words.
+    let xml = dir.path().join("broken.xml");
+    let o = gartowen(&[
+        "verify",
+        "--level",
+        "exhaustive",
+        "--dims",
+        "1",
+        "--external",
+        broken.to_str().unwrap(),
+        "--base",
+        "2",
+        "--shard",
+        "7/4096",
+        "--junit",
+        xml.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{}{}", stdout(&o), stderr(&o));
+    let junit = std::fs::read_to_string(&xml).unwrap();
+    assert!(
+        junit.contains("<failure")
+            && junit.contains("dim 1 chunks 6..7: not nested: inputs 0x600000"),
+        "{junit}"
     );
     // A program that dies is an external failure (exit 3), not a verdict; the certificate
     // is still written and names it.

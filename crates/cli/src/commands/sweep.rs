@@ -229,6 +229,7 @@ pub fn run(a: &VerifyArgs, dims_text: &str) -> Result<ExitCode, CliError> {
     };
     let code = finish(
         a.json.as_ref(),
+        a.junit.as_ref(),
         &parameters,
         shard,
         inputs,
@@ -247,6 +248,7 @@ pub fn run(a: &VerifyArgs, dims_text: &str) -> Result<ExitCode, CliError> {
 /// merge), else the pieces there are (a shard's, or those before an external program failed).
 fn finish(
     json: Option<&PathBuf>,
+    junit: Option<&PathBuf>,
     parameters: &SweepParameters,
     shard: Shard,
     inputs: Vec<InputRecord>,
@@ -293,6 +295,13 @@ fn finish(
         );
         records.iter().filter(|r| r.piece.failure.is_some()).count()
     };
+    if let Some(path) = junit {
+        crate::output::write_junit(
+            path,
+            "gartowen verify --level exhaustive",
+            &junit_suites(&records, external_failure, json),
+        )?;
+    }
     if let Some(path) = json {
         let cert = Certificate::new(
             "verify",
@@ -322,6 +331,60 @@ fn finish(
     } else {
         crate::error::EXIT_FAIL
     }))
+}
+
+/// JUnit for the sweep: a suite per implementation, a case per piece (dimension and chunks),
+/// failing with the first failing word's description; a failed external program is a failing
+/// case of its own.
+fn junit_suites(
+    records: &[PieceRecord],
+    external_failure: Option<&str>,
+    json: Option<&PathBuf>,
+) -> Vec<gartowen::battery::junit::JunitSuite> {
+    use gartowen::battery::junit::{JunitCase, JunitSuite};
+    let mut names: Vec<&str> = records.iter().map(|r| r.implementation.as_str()).collect();
+    names.dedup();
+    let mut suites: Vec<JunitSuite> = names
+        .iter()
+        .map(|name| JunitSuite {
+            name: name.to_string(),
+            certificate: json.map(|p| p.display().to_string()),
+            cases: records
+                .iter()
+                .filter(|r| r.implementation == *name)
+                .map(|r| {
+                    let p = &r.piece;
+                    let what = format!("dim {} chunks {}..{}", p.dim, p.chunks[0], p.chunks[1]);
+                    JunitCase {
+                        failure: p.failure.as_ref().map(|f| {
+                            (
+                                format!("{what}: {}", f.describe(p.base)),
+                                serde_json::to_string(f).expect("failures serialize"),
+                            )
+                        }),
+                        name: what,
+                        skipped: false,
+                        output: format!("{} words", p.words),
+                        seconds: r.seconds,
+                    }
+                })
+                .collect(),
+        })
+        .collect();
+    if let Some(e) = external_failure {
+        suites.push(JunitSuite {
+            name: "external program".into(),
+            certificate: None,
+            cases: vec![JunitCase {
+                name: "the program answered every request".into(),
+                failure: Some((e.to_string(), e.to_string())),
+                skipped: false,
+                output: String::new(),
+                seconds: 0.0,
+            }],
+        });
+    }
+    suites
 }
 
 /// The pieces as a certificate keeps them: whole for a shard (the merge needs their chunk
@@ -444,7 +507,11 @@ fn print_verdict(v: &ImplementationVerdict) -> Result<(), CliError> {
 
 /// `verify --merge` of sweep shards: the shards 1..N of one sweep, each once, from the same tool
 /// version and parameters; every implementation, dimension and chunk covered exactly once.
-pub fn merge(paths: &[PathBuf], json: Option<&PathBuf>) -> Result<ExitCode, CliError> {
+pub fn merge(
+    paths: &[PathBuf],
+    json: Option<&PathBuf>,
+    junit: Option<&PathBuf>,
+) -> Result<ExitCode, CliError> {
     use super::shards::{check_digest, read_certificate, refuse, ShardSet};
     let mut set = ShardSet::default();
     let mut first: Option<(Certificate, SweepParameters)> = None;
@@ -483,7 +550,7 @@ pub fn merge(paths: &[PathBuf], json: Option<&PathBuf>) -> Result<ExitCode, CliE
     for (p, text) in &texts {
         check_digest(p, text)?;
     }
-    finish(json, &params, Shard::ALL, cert.inputs, records, None)
+    finish(json, junit, &params, Shard::ALL, cert.inputs, records, None)
 }
 
 /// Checks a certificate of the every-word sweep field by field (`certificate check`): the tool

@@ -242,7 +242,7 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
     }
     if let Some(first) = a.merge.first() {
         if is_sweep_certificate(first)? {
-            return super::sweep::merge(&a.merge, a.json.as_ref());
+            return super::sweep::merge(&a.merge, a.json.as_ref(), a.junit.as_ref());
         }
     }
     if let Some(dims) = &a.dims {

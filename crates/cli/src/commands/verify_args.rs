@@ -93,7 +93,7 @@ pub struct VerifyArgs {
     /// 32-bit support) is scrambled and checked for bijectivity and nestedness at every depth,
     /// in one streaming pass. 64-bit words cannot be enumerated (2^64 words) and are refused;
     /// the sampled levels (without --dims) check them.
-    #[arg(long, conflicts_with_all = ["merge", "expect", "junit"])]
+    #[arg(long, conflicts_with_all = ["merge", "expect"])]
     pub dims: Option<String>,
     /// Scrambling base of the external program (a power of two, 2..=256).
     #[arg(long, default_value_t = 2, requires = "external")]
@@ -113,7 +113,8 @@ pub struct VerifyArgs {
     /// The external program does not claim any law (same as --claim nested).
     #[arg(long, requires = "external", conflicts_with = "claim")]
     pub no_uniform_claim: bool,
-    /// Also write JUnit XML (one testsuite per implementation, one testcase per check).
+    /// Also write JUnit XML (one testsuite per implementation, one testcase per check; for
+    /// the every-word sweep, one testcase per dimension piece).
     #[arg(long)]
     pub junit: Option<PathBuf>,
     /// Judge on this claim instead of each implementation's own: nested | owen |
