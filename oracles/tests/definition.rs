@@ -86,3 +86,28 @@ fn the_definition_depends_on_seed_dimension_and_every_digit_above() {
     let low = |y: u64| y & 0xf;
     assert!((1..16u64).any(|d| low(scr(1, x, 0)) != low(scr(1, x ^ (d << 28), 0))));
 }
+
+/// Keys whose first word is rejected (key 0 for every n ≥ 3: 0·n! mod 2^64 = 0 is below
+/// 2^64 mod n!) redraw from the node's stream in both; random keys almost never do.
+#[test]
+fn every_node_draw_equals_the_tuned_one_rejected_keys_included() {
+    let mut rng = SplitMix64::new(0xD5A3);
+    let keys: Vec<u64> = [0u64, 1, u64::MAX, 1 << 63]
+        .into_iter()
+        .chain((0..64).map(|_| rng.next_u64()))
+        .collect();
+    for bits in 1..=8u32 {
+        for variant in OwenVariant::ALL {
+            for &key in &keys {
+                assert_eq!(
+                    owen_definition::draw(variant, bits, key),
+                    gartowen_owen::node_draw::node_permutation(variant, bits, key),
+                    "{variant:?}, {bits} bits, key {key:#x}"
+                );
+            }
+        }
+    }
+    // Key 0 is rejected: its draw is not the identity that u = 0 would give.
+    let first = owen_definition::draw(OwenVariant::Uniform, 2, 0);
+    assert_ne!(first, gartowen_core::Permutation::identity(4).unwrap());
+}
