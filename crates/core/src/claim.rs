@@ -193,6 +193,14 @@ impl Claim {
     }
 }
 
+impl std::str::FromStr for Claim {
+    type Err = CoreError;
+    /// [`Claim::parse`], for `"owen".parse::<Claim>()` (the CLI's and Python's vocabulary).
+    fn from_str(text: &str) -> Result<Claim, CoreError> {
+        Claim::parse(text)
+    }
+}
+
 impl fmt::Display for Claim {
     /// The form [`Claim::parse`] reads back.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -237,6 +245,7 @@ mod tests {
             "independent needs a group"
         );
         assert!(Claim::parse("marginal:bogus").is_err());
+        assert_eq!("independent:cyclic".parse::<Claim>(), Claim::parse("independent:cyclic"));
     }
 
     #[test]
