@@ -183,8 +183,8 @@ fn external_programs_are_swept_over_pipes_and_a_broken_one_is_named() {
     let dir = tempfile::tempdir().unwrap();
     let lk = example(dir.path(), "lk_hash");
     let broken = example(dir.path(), "broken_hash");
-    let run = |program: &Path, shard: &str| {
-        gartowen(&[
+    let run_with = |program: &Path, shard: &str, extra: &[&str]| {
+        let mut args = vec![
             "verify",
             "--level",
             "exhaustive",
@@ -196,8 +196,11 @@ fn external_programs_are_swept_over_pipes_and_a_broken_one_is_named() {
             "2",
             "--shard",
             shard,
-        ])
+        ];
+        args.extend_from_slice(extra);
+        gartowen(&args)
     };
+    let run = |program: &Path, shard: &str| run_with(program, shard, &[]);
     let o = run(&lk, "7/4096");
     assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
     assert!(stdout(&o).contains("chunks 6..7 of 4096: no failure in 1048576 words"));
@@ -210,21 +213,7 @@ fn external_programs_are_swept_over_pipes_and_a_broken_one_is_named() {
     );
     // Its JUnit names the failing piece and the first failing words.
     let xml = dir.path().join("broken.xml");
-    let o = gartowen(&[
-        "verify",
-        "--level",
-        "exhaustive",
-        "--dims",
-        "1",
-        "--external",
-        broken.to_str().unwrap(),
-        "--base",
-        "2",
-        "--shard",
-        "7/4096",
-        "--junit",
-        xml.to_str().unwrap(),
-    ]);
+    let o = run_with(&broken, "7/4096", &["--junit", xml.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(1), "{}{}", stdout(&o), stderr(&o));
     let junit = std::fs::read_to_string(&xml).unwrap();
     assert!(

@@ -245,7 +245,10 @@ mod tests {
             "independent needs a group"
         );
         assert!(Claim::parse("marginal:bogus").is_err());
-        assert_eq!("independent:cyclic".parse::<Claim>(), Claim::parse("independent:cyclic"));
+        assert_eq!(
+            "independent:cyclic".parse::<Claim>(),
+            Claim::parse("independent:cyclic")
+        );
     }
 
     #[test]
