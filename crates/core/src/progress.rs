@@ -49,3 +49,25 @@ impl<F: Fn(u64) + Sync> Progress for F {
         self(k)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::sync::atomic::{AtomicU64, Ordering};
+
+    #[test]
+    fn a_closure_counts_the_units_and_ignores_the_rest() {
+        let done = AtomicU64::new(0);
+        let count = |k: u64| {
+            done.fetch_add(k, Ordering::Relaxed);
+        };
+        let p: &dyn Progress = &count;
+        p.start(100, "words");
+        p.message("dimension 0");
+        p.advance(3);
+        p.advance(4);
+        p.finish();
+        assert_eq!(done.load(Ordering::Relaxed), 7);
+        Silent.advance(5); // and Silent ignores everything
+    }
+}
