@@ -46,13 +46,13 @@ pub const SZ4_DIMS: usize = 4;
 /// Maximum dimensions of sz16.
 pub const SZ16_DIMS: usize = 16;
 
-/// The field element and output transform of sz4 dimension j: a = (0, 1, ω², ω)[j],
+/// The field element and output transform of sz4 dimension j: a = `(0, 1, ω², ω)[j]`,
 /// D = I for even j, U for odd j.
 pub fn sz4_parameters(j: usize) -> (u32, Gf2Matrix) {
     quad_parameters(&ALPHA, j)
 }
 
-/// [`sz4_parameters`] of the earlier reconstruction `sz4-faure`: a = (0, 1, ω, ω²)[j].
+/// [`sz4_parameters`] of the earlier reconstruction `sz4-faure`: a = `(0, 1, ω, ω²)[j]`.
 pub fn sz4_faure_parameters(j: usize) -> (u32, Gf2Matrix) {
     quad_parameters(&ALPHA_FAURE, j)
 }

@@ -206,4 +206,27 @@ mod tests {
             c.detail
         );
     }
+
+    #[test]
+    fn the_level_is_split_over_implementations_times_sub_tests_and_p_at_the_level_passes() {
+        // 3 implementations × 2 claimed sub-tests: α' = 1e-3 / 6 (not / 5).
+        let alpha = FAMILY_ALPHA / 6.0;
+        let tests = vec![
+            sub("at the level", Requirement::Marginal, alpha),
+            sub("just below", Requirement::Marginal, alpha * 0.999),
+            sub("unclaimed", Requirement::Independent, 0.5),
+        ];
+        let claim = Claim::marginal(NodeGroup::Symmetric);
+        let c = &judge_families(vec![("family", tests)], claim, 3, 0.0)[0];
+        assert_eq!(c.alpha, Some(alpha));
+        // p = α' is no deviation (p < α' is), p just below it is.
+        assert!(!c.tests[0].deviates && c.tests[1].deviates);
+        // Measured-only sub-tests are flagged at 1e-3 / (3 × 3), the level they would have had.
+        assert!(
+            c.detail
+                .contains(&format!("at α' = {:.1e}", FAMILY_ALPHA / 9.0)),
+            "{}",
+            c.detail
+        );
+    }
 }
