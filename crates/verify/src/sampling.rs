@@ -186,4 +186,28 @@ mod tests {
             "no instance for seed 7: the license server is down"
         );
     }
+
+    #[test]
+    fn a_probe_is_evaluated_for_its_own_seeds_only() {
+        let identity: Box<SeedBuilder> = Box::new(|_| Ok(Box::new(Identity)));
+        let long = Probe {
+            dim: 0,
+            words: vec![7],
+            seeds: 3,
+        };
+        let short = Probe {
+            dim: 0,
+            words: vec![9, 10],
+            seeds: 1,
+        };
+        let out = evaluate(identity.as_ref(), Width::W32, 0, &[long, short]).unwrap();
+        assert_eq!(out.len(), 3, "the most seeds any probe asks for");
+        assert_eq!(out[0], vec![vec![7], vec![9, 10]]);
+        assert_eq!(
+            out[1],
+            vec![vec![7], vec![]],
+            "seed 1 is past the short probe's seeds"
+        );
+        assert_eq!(out[2], vec![vec![7], vec![]]);
+    }
 }
