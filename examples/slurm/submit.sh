@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Submits a gartowen job array and the dependent job that joins it, in one command.
+#
+# Usage: submit.sh [--wait] verify N OUT [verify options...]
+#        submit.sh [--wait] check LIST OUT
+#   GARTOWEN=$PWD/target/release/gartowen examples/slurm/submit.sh verify 32 out \
+#       --level exhaustive --dims 0..1023 --impl art-owen-2
+#   examples/slurm/submit.sh --wait verify 4 out --level exhaustive --dims 0..3 \
+#       --external ./my_scrambler --base 2 --claim nested
+# verify: an array of N shards (verify-array.sbatch), then merge.sbatch → OUT/merged.json and
+# OUT/merged.xml. check: one task per line of LIST (check-array.sbatch), then
+# check-summary.sbatch → OUT/summary.txt. Task logs go to OUT/logs/. OUT, the program and
+# GARTOWEN must be on a file system every node sees. Extra sbatch options (partition, account,
+# --time for long shards) go in SBATCH_* variables, e.g. SBATCH_PARTITION=short; options for
+# the array tasks alone in GARTOWEN_ARRAY_OPTS, e.g. "--cpus-per-task=8 --time=04:00:00".
+# Prints the two job ids. With --wait it returns when the joining job has ended, with its exit
+# code (0 pass, 1 a check failed, 2 a shard or check missing or refused).
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+wait=()
+if [ "${1:-}" = --wait ]; then wait=(--wait); shift; fi
+usage="usage: submit.sh [--wait] verify N OUT [verify options...] | submit.sh [--wait] check LIST OUT"
+kind="${1:?$usage}"
+command -v sbatch >/dev/null || { echo "submit.sh: sbatch not found: is this a Slurm login node?" >&2; exit 2; }
+case "$kind" in
+  verify)
+    n="${2:?$usage}"; out="${3:?$usage}"; shift 3
+    [[ "$n" =~ ^[1-9][0-9]*$ ]] || { echo "submit.sh: N must be a positive integer, not '$n'" >&2; exit 2; }
+    mkdir -p "$out/logs"; out="$(cd "$out" && pwd)"
+    array=$(sbatch --parsable --array="1-$n" ${GARTOWEN_ARRAY_OPTS:-} --output="$out/logs/verify-%a.out" \
+      "$here/verify-array.sbatch" "$out" "$@")
+    array="${array%%;*}"
+    echo "array $array: $n verify shards; merge after it:" >&2
+    set +e
+    sbatch --parsable "${wait[@]}" --dependency="afterany:$array" --kill-on-invalid-dep=yes \
+      --output="$out/logs/merge.out" "$here/merge.sbatch" "$out" "$n"
+    rc=$?
+    ;;
+  check)
+    list="${2:?$usage}"; out="${3:?$usage}"
+    [ -f "$list" ] || { echo "submit.sh: no list file '$list'" >&2; exit 2; }
+    k=$(grep -c -v -E '^[[:space:]]*(#|$)' "$list" || true)
+    [ "$k" -gt 0 ] || { echo "submit.sh: '$list' has no checks" >&2; exit 2; }
+    mkdir -p "$out/logs"; out="$(cd "$out" && pwd)"; list="$(cd "$(dirname "$list")" && pwd)/$(basename "$list")"
+    array=$(sbatch --parsable --array="1-$k" ${GARTOWEN_ARRAY_OPTS:-} --output="$out/logs/check-%a.out" \
+      "$here/check-array.sbatch" "$list" "$out")
+    array="${array%%;*}"
+    echo "array $array: $k checks; summary after it:" >&2
+    set +e
+    sbatch --parsable "${wait[@]}" --dependency="afterany:$array" --kill-on-invalid-dep=yes \
+      --output="$out/logs/summary.out" "$here/check-summary.sbatch" "$list" "$out"
+    rc=$?
+    ;;
+  *) echo "submit.sh: unknown kind '$kind' ($usage)" >&2; exit 2 ;;
+esac
+exit "$rc"
