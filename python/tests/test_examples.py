@@ -33,3 +33,14 @@ def test_verify_my_scrambler_example():
     assert "as expected" in r.stdout
     assert "python:my_owen (claim owen): pass" in r.stdout
     assert "python:my_shift (claim owen): FAIL" in r.stdout
+
+
+def test_the_front_readme_python_example_prints_what_its_comment_says(capsys):
+    text = (REPO / "README.md").read_text()
+    (block,) = re.findall(r"```python\n(.*?)```", text, re.S)
+    exec(compile(block, "README.md", "exec"), {})
+    printed = capsys.readouterr().out.split()
+    # The comment: "0: still a (0,3,16)-net in base 16".
+    assert re.search(r"# (\d+): still a \(\1,", block), "the comment states a t-value"
+    t = re.search(r"# (\d+): still", block).group(1)
+    assert printed == [t]

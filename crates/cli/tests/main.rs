@@ -11,6 +11,7 @@ mod discrepancy;
 mod generate;
 mod junit;
 mod oracle;
+mod readme;
 mod report;
 mod scene;
 mod scramble;
