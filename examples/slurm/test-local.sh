@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Exercises the job-array scripts beside it on a real Slurm: starts a single-node cluster on
-# localhost (local-cluster.sh), submits a 4-task exhaustive verify array and its merge, and a
-# check array and its summary, and compares what they wrote with unsharded runs of the same
-# commands: the merged certificate must equal the unsharded one (timings and digest aside),
-# each check certificate its unsharded twin, and the summary must name the violated check.
+# localhost (local-cluster.sh), submits a 4-task and a 1-task exhaustive verify array with their
+# merges, and a check array with its summary, and compares what they wrote with unsharded runs
+# of the same commands: each merged certificate must equal the unsharded one (timings and
+# digest aside), each check certificate its unsharded twin, and the summary must name the
+# violated check.
 #
 # Usage: test-local.sh GARTOWEN_BINARY [WORK_DIR]
 # Exit: 0 all equal; 1 a difference (shown); 77 Slurm cannot run here (not root, or the
@@ -79,6 +80,15 @@ for i in 1 2 3 4; do
 done
 [ -f "$work/verify/merged.xml" ] || { echo "FAILED: no merged.xml" >&2; fail=1; }
 same "$work/unsharded.json" "$work/verify/merged.json" "merged certificate of 4 array tasks = unsharded run"
+
+# An array of one task is the whole run: its merge checks and keeps the certificate.
+set +e
+"$here/submit.sh" --wait verify 1 "$work/one" "${sweep[@]}" > "$work/one-jobs.txt"
+rc=$?
+set -e
+[ "$rc" = 0 ] || { echo "FAILED: the merge of a 1-task array exited $rc" >&2; cat "$work/one/logs/"*.out >&2; fail=1; }
+[ -f "$work/one/merged.xml" ] || { echo "FAILED: a 1-task array wrote no merged.xml" >&2; fail=1; }
+same "$work/unsharded.json" "$work/one/merged.json" "certificate of a 1-task array = unsharded run"
 
 # 2. check: one task per line; the second line is a 4-D Sobol net claimed at t = 0, violated.
 "$g" generate --seq sobol --dims 4 --log2-n 10 --format npy -o "$work/sobol.npy"
