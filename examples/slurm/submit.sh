@@ -22,19 +22,31 @@ if [ "${1:-}" = --wait ]; then wait=(--wait); shift; fi
 usage="usage: submit.sh [--wait] verify N OUT [verify options...] | submit.sh [--wait] check LIST OUT"
 kind="${1:?$usage}"
 command -v sbatch >/dev/null || { echo "submit.sh: sbatch not found: is this a Slurm login node?" >&2; exit 2; }
+# submit_pair TASKS NAME ARRAY_SCRIPT JOIN_SCRIPT JOIN_LOG ARRAY_ARGS... -- JOIN_ARGS...:
+# the array of TASKS tasks (logs OUT/logs/NAME-K.out), then the joining job after every task
+# has ended; the exit code is sbatch's (with --wait, the joining job's).
+submit_pair() {
+  local tasks="$1" name="$2" array_script="$3" join_script="$4" join_log="$5"
+  shift 5
+  local array_args=()
+  while [ "$1" != -- ]; do array_args+=("$1"); shift; done
+  shift
+  local array
+  array=$(sbatch --parsable --array="1-$tasks" ${GARTOWEN_ARRAY_OPTS:-} \
+    --output="$out/logs/$name-%a.out" "$here/$array_script" "${array_args[@]}")
+  array="${array%%;*}"
+  echo "array $array: $tasks $name task(s); $join_script after it:" >&2
+  sbatch --parsable "${wait[@]}" --dependency="afterany:$array" --kill-on-invalid-dep=yes \
+    --output="$out/logs/$join_log" "$here/$join_script" "$@"
+}
+
 case "$kind" in
   verify)
     n="${2:?$usage}"; out="${3:?$usage}"; shift 3
     [[ "$n" =~ ^[1-9][0-9]*$ ]] || { echo "submit.sh: N must be a positive integer, not '$n'" >&2; exit 2; }
     mkdir -p "$out/logs"; out="$(cd "$out" && pwd)"
-    array=$(sbatch --parsable --array="1-$n" ${GARTOWEN_ARRAY_OPTS:-} --output="$out/logs/verify-%a.out" \
-      "$here/verify-array.sbatch" "$out" "$@")
-    array="${array%%;*}"
-    echo "array $array: $n verify shards; merge after it:" >&2
-    set +e
-    sbatch --parsable "${wait[@]}" --dependency="afterany:$array" --kill-on-invalid-dep=yes \
-      --output="$out/logs/merge.out" "$here/merge.sbatch" "$out" "$n"
-    rc=$?
+    rc=0
+    submit_pair "$n" verify verify-array.sbatch merge.sbatch merge.out "$out" "$@" -- "$out" "$n" || rc=$?
     ;;
   check)
     list="${2:?$usage}"; out="${3:?$usage}"
@@ -42,14 +54,8 @@ case "$kind" in
     k=$(grep -c -v -E '^[[:space:]]*(#|$)' "$list" || true)
     [ "$k" -gt 0 ] || { echo "submit.sh: '$list' has no checks" >&2; exit 2; }
     mkdir -p "$out/logs"; out="$(cd "$out" && pwd)"; list="$(cd "$(dirname "$list")" && pwd)/$(basename "$list")"
-    array=$(sbatch --parsable --array="1-$k" ${GARTOWEN_ARRAY_OPTS:-} --output="$out/logs/check-%a.out" \
-      "$here/check-array.sbatch" "$list" "$out")
-    array="${array%%;*}"
-    echo "array $array: $k checks; summary after it:" >&2
-    set +e
-    sbatch --parsable "${wait[@]}" --dependency="afterany:$array" --kill-on-invalid-dep=yes \
-      --output="$out/logs/summary.out" "$here/check-summary.sbatch" "$list" "$out"
-    rc=$?
+    rc=0
+    submit_pair "$k" check check-array.sbatch check-summary.sbatch summary.out "$list" "$out" -- "$list" "$out" || rc=$?
     ;;
   *) echo "submit.sh: unknown kind '$kind' ($usage)" >&2; exit 2 ;;
 esac
