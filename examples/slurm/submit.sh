@@ -14,7 +14,8 @@
 # --time for long shards) go in SBATCH_* variables, e.g. SBATCH_PARTITION=short; options for
 # the array tasks alone in GARTOWEN_ARRAY_OPTS, e.g. "--cpus-per-task=8 --time=04:00:00".
 # Prints the two job ids. With --wait it returns when the joining job has ended, with its exit
-# code (0 pass, 1 a check failed, 2 a shard or check missing or refused).
+# code (0 pass, 1 a check failed, 2 a shard or check missing or refused, or sbatch refused the
+# array).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 wait=()
@@ -33,7 +34,8 @@ submit_pair() {
   shift
   local array
   array=$(sbatch --parsable --array="1-$tasks" ${GARTOWEN_ARRAY_OPTS:-} \
-    --output="$out/logs/$name-%a.out" "$here/$array_script" "${array_args[@]}")
+    --output="$out/logs/$name-%a.out" "$here/$array_script" "${array_args[@]}") ||
+    { echo "submit.sh: sbatch did not take the array (its message is above)" >&2; return 2; }
   array="${array%%;*}"
   echo "array $array: $tasks $name task(s); $join_script after it:" >&2
   sbatch --parsable "${wait[@]}" --dependency="afterany:$array" --kill-on-invalid-dep=yes \
