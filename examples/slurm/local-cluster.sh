@@ -41,6 +41,13 @@ cpus="$(nproc)"
 mem_mb=$(( $(awk '/MemTotal/ {print $2}' /proc/meminfo) / 1024 - 512 ))
 mkdir -p "$dir/state" "$dir/spool" "$dir/munge"
 chown munge:munge "$dir/munge"
+# munged runs as the munge user: every folder above its own must let it pass (mktemp -d
+# makes mode 700 folders, which do not).
+runuser -u munge -- test -w "$dir/munge" || {
+  echo "local-cluster.sh: the munge user cannot reach $dir/munge: every folder above it needs" \
+    "o+x (mktemp -d makes mode 700 folders); chmod o+x them or choose DIR elsewhere" >&2
+  exit 2
+}
 # Ports away from Slurm's defaults, so a real installation on the same host is left alone.
 cat > "$dir/slurm.conf" <<CONF
 ClusterName=gartowen-local

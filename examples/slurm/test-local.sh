@@ -13,8 +13,12 @@
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 g="$(cd "$(dirname "${1:?usage: test-local.sh GARTOWEN_BINARY [WORK_DIR]}")" && pwd)/$(basename "$1")"
-work="${2:-$(mktemp -d)}"
-mkdir -p "$work"; work="$(cd "$work" && pwd)"
+if [ -n "${2:-}" ]; then
+  mkdir -p "$2"; work="$(cd "$2" && pwd)"
+else
+  work="$(mktemp -d)"
+  chmod 755 "$work" # the daemons' users (munge) must reach the cluster folder inside it
+fi
 [ -x "$g" ] || { echo "test-local.sh: '$1' is not an executable gartowen" >&2; exit 2; }
 
 packages="slurmctld slurmd slurm-client munge"
