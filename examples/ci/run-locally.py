@@ -114,8 +114,9 @@ class Runner:
             shutil.copytree(args.artifacts_from, self.artifacts)
         os.makedirs(self.artifacts, exist_ok=True)
 
-    def job_env(self, name, extra):
-        home = os.path.join(self.work, "jobs", name)
+    def job_env(self, label, extra):
+        """A fresh workspace for one job instance, and its environment (the cargo shim first)."""
+        home = os.path.join(self.work, "jobs", slug(label))
         bindir = os.path.join(home, "bin")
         workspace = os.path.join(home, "workspace")
         os.makedirs(bindir)
@@ -123,7 +124,12 @@ class Runner:
         cargo_shim(bindir, self.gartowen)
         env = dict(os.environ, PATH=bindir + os.pathsep + os.environ["PATH"], CI="true")
         env.update({k: str(v) for k, v in extra.items()})
-        return home, workspace, env
+        return workspace, env
+
+
+def slug(label):
+    """A job's label as a folder name ("exhaustive 1/4" → "exhaustive_1_4")."""
+    return re.sub(r"\W+", "_", label)
 
 
 def expand(text, matrix):
@@ -199,9 +205,9 @@ def run_github(runner, doc, log):
         if any(status[n] not in ("passed", "not run") for n in as_list(job.get("needs"))):
             status[name] = "skipped"
             continue
-        results = []
+        failed_any = False
         for label, matrix in github_instances(name, job):
-            home, workspace, env = runner.job_env(re.sub(r"\W+", "_", label), {})
+            workspace, env = runner.job_env(label, {})
             failed = False
             for step in job["steps"]:
                 cond = str(step.get("if", "success()")).strip()
@@ -213,9 +219,9 @@ def run_github(runner, doc, log):
                 if rc != 0:
                     log.write(f"job {label}: step failed (exit {rc}): {step_name(step)}\n")
                     failed = True
-            results.append((label, failed))
+            failed_any |= failed
             log.write(f"job {label}: {'FAILED' if failed else 'passed'}\n")
-        status[name] = "failed" if any(f for _, f in results) else "passed"
+        status[name] = "failed" if failed_any else "passed"
     return status
 
 
@@ -254,7 +260,7 @@ def run_gitlab(runner, doc, log):
                 status[name] = "not run"
                 artifacts_of[name] = [os.path.join(runner.artifacts, d)
                                       for d in sorted(os.listdir(runner.artifacts))
-                                      if re.match(re.sub(r"\W+", "_", name) + r"(_|$)", d)]
+                                      if re.match(slug(name) + r"(_|$)", d)]
                 continue
             needs = as_list(job.get("needs"))
             earlier = [j for j in jobs if stages.index(jobs[j].get("stage", "test"))
@@ -271,7 +277,7 @@ def run_gitlab(runner, doc, log):
                 extra = dict(env_vars)
                 if count > 1:
                     extra.update(CI_NODE_INDEX=index, CI_NODE_TOTAL=count)
-                home, workspace, env = runner.job_env(re.sub(r"\W+", "_", label), extra)
+                workspace, env = runner.job_env(label, extra)
                 if env_vars.get("GIT_STRATEGY", "fetch") != "none":
                     strategy = env_vars.get("GIT_SUBMODULE_STRATEGY", "none")
                     clone(runner.repo, workspace, strategy in ("normal", "recursive"))
@@ -283,7 +289,7 @@ def run_gitlab(runner, doc, log):
                 failed = rc != 0
                 art = job.get("artifacts") or {}
                 if art and (not failed or art.get("when") in ("always", "on_failure")):
-                    dest = os.path.join(runner.artifacts, re.sub(r"\W+", "_", label))
+                    dest = os.path.join(runner.artifacts, slug(label))
                     paths = list(art.get("paths", []))
                     junit = as_list((art.get("reports") or {}).get("junit"))
                     copy_matches(paths + junit, workspace, dest)
