@@ -17,7 +17,7 @@ pub mod registry;
 pub mod variants;
 
 pub use composed::QArtComposed;
-pub use engine::{ArtOwen, BatchKernel, BATCH_TABLE_BYTES};
+pub use engine::{ArtOwen, BatchKernel, BATCH_TABLES_AFTER_WORDS, BATCH_TABLE_BYTES};
 pub use grammar::Grammar;
 #[cfg(feature = "mutants")]
 pub use mutants::{ArtMutant, TailUntranslated};

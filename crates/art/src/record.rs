@@ -270,9 +270,13 @@ impl ArtRecord {
         if self.layout == PsiLayout::Identity {
             return None;
         }
-        let images: Vec<u8> = (0..1u32 << self.variant.q())
-            .map(|d| self.psi_apply(s, d) as u8)
-            .collect();
+        let images: Vec<u8> = match self.psi_matrix(s) {
+            // Linear ψ: its images by linearity, the same values psi_apply decodes (tested).
+            Some(m) => m.images(),
+            None => (0..1u32 << self.variant.q())
+                .map(|d| self.psi_apply(s, d) as u8)
+                .collect(),
+        };
         Some(Permutation::from_images(&images).expect("a record's ψ is a bijection"))
     }
 

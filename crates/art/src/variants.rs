@@ -91,7 +91,8 @@ impl ArtVariant {
             }
             ArtVariant::Matrix(_) => {
                 let a = Gf2Matrix::random_invertible(q, rng).expect("q ≤ 8");
-                (Some(images(&|d| a.apply(d))), rng.next_u64())
+                let p = Permutation::from_images(&a.images()).expect("invertible");
+                (Some(p), rng.next_u64())
             }
             ArtVariant::ArtOwen8P => {
                 let p = Permutation::random(8, rng).expect("8");

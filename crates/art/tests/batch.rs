@@ -181,3 +181,49 @@ fn large_tables_take_narrow_steps_and_still_equal_the_scalar_path() {
         }
     }
 }
+
+#[test]
+fn batch_tables_are_built_once_the_words_pay_for_them_and_change_no_output() {
+    use gartowen_art::BATCH_TABLES_AFTER_WORDS;
+    let after = BATCH_TABLES_AFTER_WORDS as usize;
+    for variant in [
+        ArtVariant::ArtOwen2,
+        ArtVariant::ArtOwen16P,
+        ArtVariant::Matrix(8),
+    ] {
+        let check = |art: &ArtOwen, input: &[u64], label: &str| {
+            let mut batch = input.to_vec();
+            art.scramble_batch(&mut batch, Width::W32, 5);
+            for (&x, &y) in input.iter().zip(&batch) {
+                assert_eq!(y, art.scramble(x, Width::W32, 5), "{label} {x:#x}");
+            }
+        };
+        let small: Vec<u64> = words(1, 1000).iter().map(|w| w & 0xFFFF_FFFF).collect();
+        let rest: Vec<u64> = words(2, after - 1000)
+            .iter()
+            .map(|w| w & 0xFFFF_FFFF)
+            .collect();
+        // Small calls walk the split tables; their words count towards the build.
+        let art = ArtOwen::new(variant, 256, 4).unwrap();
+        assert!(
+            !art.batch_tables_built(),
+            "{} built eagerly",
+            variant.name()
+        );
+        check(&art, &small, "before");
+        let mut wide = small.clone();
+        art.scramble_batch(&mut wide, Width::W64, 5);
+        assert!(!art.batch_tables_built(), "{}", variant.name());
+        check(&art, &rest[..after - 2001], "still short");
+        assert!(!art.batch_tables_built(), "{} built early", variant.name());
+        check(&art, &rest[after - 2001..], "the word that pays");
+        assert!(art.batch_tables_built(), "{} never built", variant.name());
+        check(&art, &small, "after");
+        // One call of that many words builds them at once, and a clone keeps them.
+        let fresh = ArtOwen::new(variant, 256, 4).unwrap();
+        let mut all = rest.clone();
+        all.extend_from_slice(&small);
+        check(&fresh, &all, "one call");
+        assert!(fresh.batch_tables_built() && fresh.clone().batch_tables_built());
+    }
+}

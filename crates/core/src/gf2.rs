@@ -90,6 +90,18 @@ impl Gf2Matrix {
         y
     }
 
+    /// A·x for every q-bit x, indexed by x: built by linearity (A·x = A·(x with its lowest
+    /// set bit cleared) ⊕ column of that bit), one XOR per entry instead of q parities.
+    pub fn images(&self) -> Vec<u8> {
+        let columns: Vec<u8> = (0..self.q).map(|j| self.apply(1 << j) as u8).collect();
+        let n = 1usize << self.q;
+        let mut out = vec![0u8; n];
+        for x in 1..n {
+            out[x] = out[x & (x - 1)] ^ columns[x.trailing_zeros() as usize];
+        }
+        out
+    }
+
     /// The product A·B (apply B first). Panics on different sizes.
     pub fn mul(&self, other: &Gf2Matrix) -> Gf2Matrix {
         assert_eq!(self.q, other.q, "multiplying matrices of different sizes");
@@ -216,5 +228,20 @@ mod tests {
         assert_eq!(m.apply(0b01), 0b01);
         assert_eq!(m.apply(0b10), 0b11);
         assert!(Gf2Matrix::from_rows(2, &[0b100, 0]).is_err());
+    }
+
+    #[test]
+    fn images_by_linearity_equal_the_row_parities() {
+        let mut rng = SplitMix64::new(3);
+        for q in 1..=8 {
+            for _ in 0..20 {
+                let m = Gf2Matrix::random_invertible(q, &mut rng).unwrap();
+                let images = m.images();
+                assert_eq!(images.len(), 1 << q);
+                for (x, &y) in images.iter().enumerate() {
+                    assert_eq!(y as u32, m.apply(x as u32), "q {q} x {x} of {m:?}");
+                }
+            }
+        }
     }
 }

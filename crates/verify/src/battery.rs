@@ -25,8 +25,9 @@ pub use crate::structure::{
 pub use crate::verdict::{CheckResult, ImplReport, Verdict};
 
 use crate::error::MergeError;
-use crate::law_runner::run_laws;
+use crate::law_runner::run_laws_timed;
 use gartowen_core::{Claim, CoreError, Progress, Registry, Silent};
+use rayon::prelude::*;
 use std::time::Instant;
 
 /// Which part of the list to run: shard `index` (1-based) of `count`; implementation k goes to
@@ -119,6 +120,7 @@ fn run_structure(c: &Candidate, check: &StructureCheck, plan: &LevelPlan) -> Che
         detail: outcome.detail,
         value: outcome.value,
         seconds: t.elapsed().as_secs_f64(),
+        words: None,
         p_value: None,
         alpha: None,
         tests: Vec::new(),
@@ -149,13 +151,20 @@ pub fn check_candidate(c: &Candidate, level: Level, judged: usize) -> ImplReport
     };
     let mut checks: Vec<CheckResult> = structure(Stage::BeforeLaws).collect();
     let started = Instant::now();
-    match run_laws(c, level, 0) {
-        Ok(families) => {
-            let seconds = started.elapsed().as_secs_f64() / families.len().max(1) as f64;
+    match run_laws_timed(c, level, 0) {
+        Ok(runs) => {
+            let costs: Vec<(f64, u64)> = runs.iter().map(|f| (f.seconds, f.words)).collect();
+            let families = runs.into_iter().map(|f| (f.name, f.tests)).collect();
+            let results = judge_families(families, c.claim, judged, 0.0);
             checks.extend(
-                judge_families(families, c.claim, judged, seconds)
+                results
                     .into_iter()
-                    .map(guard),
+                    .zip(costs)
+                    .map(|(mut r, (seconds, words))| {
+                        r.seconds = seconds;
+                        r.words = Some(words);
+                        guard(r)
+                    }),
             );
         }
         Err(e) => checks.push(guard(CheckResult {
@@ -164,6 +173,7 @@ pub fn check_candidate(c: &Candidate, level: Level, judged: usize) -> ImplReport
             detail: format!("the laws could not run: {e}"),
             value: None,
             seconds: started.elapsed().as_secs_f64(),
+            words: None,
             p_value: None,
             alpha: None,
             tests: Vec::new(),
@@ -210,18 +220,26 @@ pub fn verify_shard(
         .count();
     let mine = (0..names.len()).filter(|k| shard.contains(*k)).count();
     progress.start(mine as u64, "implementations");
-    let mut out = Vec::new();
-    for (index, name) in names.iter().enumerate().filter(|(k, _)| shard.contains(*k)) {
-        let mut candidate = registry_candidate(registry, name, index)?;
-        if let Some(c) = claim {
-            candidate.claim = c;
-        }
-        out.push(check_candidate(&candidate, level, judged));
-        progress.message(name);
-        progress.advance(1);
-    }
+    // Implementations are checked in parallel (each one's seeds too, in the same pool): the
+    // analysis between two evaluation passes is serial and leaves a core idle otherwise.
+    // Reports come back in list order, and no report depends on another.
+    let out = names
+        .par_iter()
+        .enumerate()
+        .filter(|(k, _)| shard.contains(*k))
+        .map(|(index, name)| {
+            let mut candidate = registry_candidate(registry, name, index)?;
+            if let Some(c) = claim {
+                candidate.claim = c;
+            }
+            let report = check_candidate(&candidate, level, judged);
+            progress.message(name);
+            progress.advance(1);
+            Ok(report)
+        })
+        .collect::<Result<Vec<_>, CoreError>>();
     progress.finish();
-    Ok(out)
+    out
 }
 
 #[cfg(test)]
@@ -243,6 +261,7 @@ mod tests {
                     detail: String::new(),
                     value: None,
                     seconds: 0.0,
+                    words: None,
                     p_value: None,
                     alpha: None,
                     tests: Vec::new(),

@@ -47,11 +47,14 @@ pub struct OwnPass<'a, 'b> {
     pub width: Width,
     /// The run's first seed.
     pub seed_base: u64,
+    /// Words scrambled through this pass so far (for the time profile).
+    pub words: std::cell::Cell<u64>,
 }
 
 impl OwnPass<'_, '_> {
     /// Scrambles `probes` for seeds `seed_base + first + i`, i in `0..max(probe.seeds)`.
     pub fn evaluate(&self, first: u64, probes: &[Probe]) -> Result<Outputs, BatteryError> {
+        self.words.set(self.words.get() + words_of(probes));
         evaluate(
             self.with_seed,
             self.width,
@@ -59,6 +62,11 @@ impl OwnPass<'_, '_> {
             probes,
         )
     }
+}
+
+/// The words a pass over `probes` scrambles: each probe's words for each of its seeds.
+pub fn words_of(probes: &[Probe]) -> u64 {
+    probes.iter().map(|p| p.words.len() as u64 * p.seeds).sum()
 }
 
 /// One family of law sub-tests.

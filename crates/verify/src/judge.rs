@@ -104,6 +104,7 @@ pub fn judge_families(
                 detail,
                 value: worst.as_ref().map(|w| w.statistic),
                 seconds,
+                words: None,
                 p_value: worst.as_ref().map(|w| w.p_value),
                 alpha: Some(if any_claimed { alpha } else { measure_alpha }),
                 tests,

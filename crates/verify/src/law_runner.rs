@@ -7,7 +7,7 @@
 use crate::candidate::Candidate;
 use crate::collisions::Collisions;
 use crate::dimensions::Dimensions;
-use crate::family::{LawConfig, LawFamily, OwnPass};
+use crate::family::{words_of, LawConfig, LawFamily, OwnPass};
 use crate::flip_rank::FlipRank;
 use crate::level::Level;
 use crate::marginal::NodeLaw;
@@ -17,6 +17,8 @@ use crate::sampling::{evaluate, Probe, Tree};
 use crate::structure::working_width;
 use crate::subtest::SubTest;
 use gartowen_core::DigitLayout;
+use std::cell::Cell;
+use std::time::Instant;
 
 /// Every law family the battery runs, in report order.
 pub const FAMILIES: [&dyn LawFamily; 6] = [
@@ -39,6 +41,20 @@ pub fn config(c: &Candidate, level: Level) -> LawConfig {
     }
 }
 
+/// One family's sub-tests with what they cost.
+#[derive(Debug, Clone)]
+pub struct FamilyRun {
+    /// The family's name.
+    pub name: &'static str,
+    /// Its sub-tests: its own pass's, then the shared pass's.
+    pub tests: Vec<SubTest>,
+    /// Wall seconds: its share of the shared evaluation (by words), its analysis and its own
+    /// pass.
+    pub seconds: f64,
+    /// Words scrambled for it, shared pass and own pass.
+    pub words: u64,
+}
+
 /// The sub-tests of every family in [`FAMILIES`], named by family, in that order. Seeds are
 /// `seed_base + i`.
 pub fn run_laws(
@@ -46,11 +62,26 @@ pub fn run_laws(
     level: Level,
     seed_base: u64,
 ) -> Result<Vec<(&'static str, Vec<SubTest>)>, crate::error::BatteryError> {
+    Ok(run_laws_timed(c, level, seed_base)?
+        .into_iter()
+        .map(|f| (f.name, f.tests))
+        .collect())
+}
+
+/// [`run_laws`] with each family's seconds and words scrambled.
+pub fn run_laws_timed(
+    c: &Candidate,
+    level: Level,
+    seed_base: u64,
+) -> Result<Vec<FamilyRun>, crate::error::BatteryError> {
     let cfg = config(c, level);
     let width = cfg.tree.layout.width();
     let groups: Vec<Vec<Probe>> = FAMILIES.iter().map(|f| f.shared_probes(&cfg)).collect();
     let all: Vec<Probe> = groups.iter().flatten().cloned().collect();
+    let started = Instant::now();
     let outputs = evaluate(c.with_seed.as_ref(), width, seed_base, &all)?;
+    let evaluation = started.elapsed().as_secs_f64();
+    let total_words = words_of(&all).max(1);
     let mut shared = Vec::with_capacity(FAMILIES.len());
     let mut offset = 0;
     for (family, probes) in FAMILIES.iter().zip(&groups) {
@@ -61,22 +92,33 @@ pub fn run_laws(
             .take(seeds)
             .map(|o| &o[offset..offset + probes.len()])
             .collect();
-        shared.push(family.analyse_shared(&cfg, &parts));
+        let started = Instant::now();
+        let tests = family.analyse_shared(&cfg, &parts);
+        let words = words_of(probes);
+        let share = evaluation * words as f64 / total_words as f64;
+        shared.push((tests, share + started.elapsed().as_secs_f64(), words));
         offset += probes.len();
     }
     drop(outputs);
-    let pass = OwnPass {
-        with_seed: c.with_seed.as_ref(),
-        width,
-        seed_base,
-    };
     FAMILIES
         .iter()
         .zip(shared)
-        .map(|(family, shared_tests)| {
+        .map(|(family, (shared_tests, seconds, words))| {
+            let pass = OwnPass {
+                with_seed: c.with_seed.as_ref(),
+                width,
+                seed_base,
+                words: Cell::new(0),
+            };
+            let started = Instant::now();
             let mut tests = family.own_pass(&cfg, &pass)?;
             tests.extend(shared_tests);
-            Ok((family.name(), tests))
+            Ok(FamilyRun {
+                name: family.name(),
+                tests,
+                seconds: seconds + started.elapsed().as_secs_f64(),
+                words: words + pass.words.get(),
+            })
         })
         .collect()
 }

@@ -41,6 +41,7 @@ pub mod sampling;
 pub mod stats;
 pub mod structure;
 pub mod subtest;
+pub mod time_profile;
 pub mod verdict;
 pub mod word_sweep;
 

@@ -336,6 +336,7 @@ pub fn check_equivalent_to_owen(
         detail,
         value,
         seconds: started.elapsed().as_secs_f64(),
+        words: None,
         p_value: None,
         alpha: Some(crate::equivalence::DEFAULT_ALPHA),
         tests: Vec::new(),

@@ -30,8 +30,12 @@ pub struct CheckResult {
     pub detail: String,
     /// The measured value where there is one (the worst sub-test's statistic for the laws).
     pub value: Option<f64>,
-    /// Wall time (the law checks share one pass over the seeds: each gets an equal share).
+    /// Wall time in seconds. The law checks share one evaluation pass over the seeds: each
+    /// gets the share of it its words took, plus its own analysis and passes.
     pub seconds: f64,
+    /// Words scrambled for this check (law checks; `None` where not counted).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub words: Option<u64>,
     /// The smallest p-value of the sub-tests (laws only).
     #[serde(default)]
     pub p_value: Option<f64>,

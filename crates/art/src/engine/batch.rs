@@ -28,6 +28,7 @@
 
 use super::{ArtOwen, Step, LANES};
 use gartowen_core::Width;
+use std::sync::atomic::{AtomicU64, Ordering};
 
 /// The fewest words left after the whole blocks that the gather kernels take as one
 /// zero-padded block rather than leave to the portable lanes.
@@ -36,6 +37,84 @@ const PADDED_BLOCK_MIN: usize = 16;
 
 /// The most bytes the batch table may take; wider steps are used while it fits.
 pub const BATCH_TABLE_BYTES: usize = 1 << 20;
+
+/// Words an instance scrambles through its batch path before it builds the batch tables (for
+/// 256 symbols they take 0.5–3 ms to build, the time the split-table lanes take for about
+/// 2^18 words). Calls of at least this many words build them at once.
+pub const BATCH_TABLES_AFTER_WORDS: u64 = 1 << 18;
+
+/// The batch path's tables for words of at most 32 bits: the packed table, its narrow form
+/// and the codes' top halves for the narrow kernel.
+#[derive(Debug, Clone)]
+pub(super) struct BatchTables {
+    /// Symbol · 2^(step bits) + step digits → E's top 32 bits | next symbol.
+    table: Vec<u64>,
+    /// The table's entries as 32 bits (see [`narrow`]); empty unless the symbols fit in a
+    /// step's bits.
+    narrow: Vec<u32>,
+    /// The top 32 bits of each symbol's code, for the narrow kernel's tail digit (empty
+    /// without the narrow table).
+    codes_top: Vec<u32>,
+}
+
+impl BatchTables {
+    /// The tables of `art` for steps of `digits` digits, with the invariants the gather
+    /// kernels' safety rests on (see `simd`) checked: every index (symbol << step bits |
+    /// digits) and every symbol read lies inside its table.
+    fn build(art: &ArtOwen, digits: u32) -> BatchTables {
+        let step_bits = digits * art.q();
+        let table = pack(&art.build_steps(digits), step_bits);
+        let symbols = art.grammar.symbols() as u64;
+        assert!(
+            table.len() == (symbols as usize) << step_bits
+                && art.codes.len() == symbols as usize
+                && table.iter().all(|e| e & 0xFFFF < symbols),
+            "batch table out of shape"
+        );
+        let narrow = narrow(&table, step_bits, symbols);
+        let codes_top = if narrow.is_empty() {
+            Vec::new()
+        } else {
+            art.codes.iter().map(|&c| (c >> 32) as u32).collect()
+        };
+        assert!(
+            narrow.is_empty()
+                || (narrow.len() == table.len()
+                    && codes_top.len() == art.codes.len()
+                    && narrow
+                        .iter()
+                        .all(|&e| u64::from(e) & ((1 << step_bits) - 1) < symbols)),
+            "narrow table out of shape"
+        );
+        BatchTables {
+            table,
+            narrow,
+            codes_top,
+        }
+    }
+
+    /// Bytes held.
+    pub(super) fn bytes(&self) -> usize {
+        self.table.len() * 8 + self.narrow.len() * 4 + self.codes_top.len() * 4
+    }
+}
+
+/// What the split-table lanes are handed in place of batch tables (they never read it).
+static NO_BATCH_TABLES: BatchTables = BatchTables {
+    table: Vec::new(),
+    narrow: Vec::new(),
+    codes_top: Vec::new(),
+};
+
+/// A count of words scrambled, cloned with its value (for [`ArtOwen`]'s `Clone`).
+#[derive(Debug, Default)]
+pub(super) struct WordsSeen(AtomicU64);
+
+impl Clone for WordsSeen {
+    fn clone(&self) -> Self {
+        WordsSeen(AtomicU64::new(self.0.load(Ordering::Relaxed)))
+    }
+}
 
 /// Digits per batch step for base 2^q and `symbols` symbols: as many as fit in 8 bits while the
 /// table (symbols · 2^(q·digits) entries of 8 bytes) stays within [`BATCH_TABLE_BYTES`].
@@ -153,25 +232,58 @@ impl ArtOwen {
     /// Bits per step of the batch path's table for words of at most 32 bits (0 when the
     /// alphabet is too large for it and the split tables serve every width).
     pub fn batch_step_bits(&self) -> u32 {
-        if self.batch_table.is_empty() {
-            0
-        } else {
-            self.q() * self.batch_digits
-        }
+        self.q() * self.batch_digits
     }
 
     /// Whether this scrambler has the narrow table that [`BatchKernel::Avx512Narrow`] walks
-    /// (its alphabet fits in one batch step's bits).
+    /// (its alphabet fits in one batch step's bits); builds the batch tables if needed.
     pub fn has_narrow_table(&self) -> bool {
-        !self.batch_narrow.is_empty()
+        self.batch_tables().is_some_and(|t| !t.narrow.is_empty())
+    }
+
+    /// Whether the batch tables have been built: after [`BATCH_TABLES_AFTER_WORDS`] words
+    /// through the batch path, or by [`ArtOwen::with_kernel`], `has_narrow_table` or
+    /// `table_bytes`. Outputs are the same either way.
+    pub fn batch_tables_built(&self) -> bool {
+        self.batch.get().is_some()
+    }
+
+    /// The batch tables, built on first use; `None` when the alphabet is too large for them.
+    pub(super) fn batch_tables(&self) -> Option<&BatchTables> {
+        (self.batch_digits > 0).then(|| {
+            self.batch
+                .get_or_init(|| BatchTables::build(self, self.batch_digits))
+        })
+    }
+
+    /// The batch tables if they exist or `more` words bring the words seen to
+    /// [`BATCH_TABLES_AFTER_WORDS`].
+    fn batch_tables_for(&self, more: usize) -> Option<&BatchTables> {
+        if let Some(t) = self.batch.get() {
+            return Some(t);
+        }
+        let seen = self
+            .batch_words
+            .0
+            .fetch_add(more as u64, Ordering::Relaxed)
+            .saturating_add(more as u64);
+        if seen >= BATCH_TABLES_AFTER_WORDS {
+            self.batch_tables()
+        } else {
+            None
+        }
     }
 
     /// This scrambler with its batch path walked by `kernel` (for tests and benchmarks; the
-    /// default is [`BatchKernel::detect`]). Returns `None` when this CPU cannot run it.
+    /// default is [`BatchKernel::detect`]), its batch tables built so that every batch call
+    /// walks that kernel. Returns `None` when this CPU cannot run it.
     pub fn with_kernel(&self, kernel: BatchKernel) -> Option<ArtOwen> {
-        BatchKernel::available().contains(&kernel).then(|| ArtOwen {
-            kernel,
-            ..self.clone()
+        BatchKernel::available().contains(&kernel).then(|| {
+            self.batch_tables();
+            ArtOwen {
+                kernel,
+                ..self.clone()
+            }
         })
     }
 
@@ -179,33 +291,40 @@ impl ArtOwen {
     /// [`gartowen_core::Scrambler::scramble`] on each word.
     pub(super) fn forward_batch(&self, words: &mut [u64], width: Width, dim: u32) {
         // The step width as a constant, so the step's shifts are immediates.
-        if width.bits() <= 32 && !self.batch_table.is_empty() {
-            match self.q() * self.batch_digits {
-                1 => self.batch_lanes::<1, true>(words, width, dim),
-                2 => self.batch_lanes::<2, true>(words, width, dim),
-                3 => self.batch_lanes::<3, true>(words, width, dim),
-                4 => self.batch_lanes::<4, true>(words, width, dim),
-                5 => self.batch_lanes::<5, true>(words, width, dim),
-                6 => self.batch_lanes::<6, true>(words, width, dim),
-                7 => self.batch_lanes::<7, true>(words, width, dim),
-                8 => self.batch_lanes::<8, true>(words, width, dim),
+        let packed = if width.bits() <= 32 {
+            self.batch_tables_for(words.len())
+        } else {
+            None
+        };
+        if let Some(t) = packed {
+            match self.batch_step_bits() {
+                1 => self.batch_lanes::<1, true>(t, words, width, dim),
+                2 => self.batch_lanes::<2, true>(t, words, width, dim),
+                3 => self.batch_lanes::<3, true>(t, words, width, dim),
+                4 => self.batch_lanes::<4, true>(t, words, width, dim),
+                5 => self.batch_lanes::<5, true>(t, words, width, dim),
+                6 => self.batch_lanes::<6, true>(t, words, width, dim),
+                7 => self.batch_lanes::<7, true>(t, words, width, dim),
+                8 => self.batch_lanes::<8, true>(t, words, width, dim),
                 _ => unreachable!("batch steps are 1 to 8 bits"),
             }
         } else {
             match self.q() * self.step_digits {
-                3 => self.batch_lanes::<3, false>(words, width, dim),
-                4 => self.batch_lanes::<4, false>(words, width, dim),
-                5 => self.batch_lanes::<5, false>(words, width, dim),
-                6 => self.batch_lanes::<6, false>(words, width, dim),
-                7 => self.batch_lanes::<7, false>(words, width, dim),
-                8 => self.batch_lanes::<8, false>(words, width, dim),
+                3 => self.batch_lanes::<3, false>(&NO_BATCH_TABLES, words, width, dim),
+                4 => self.batch_lanes::<4, false>(&NO_BATCH_TABLES, words, width, dim),
+                5 => self.batch_lanes::<5, false>(&NO_BATCH_TABLES, words, width, dim),
+                6 => self.batch_lanes::<6, false>(&NO_BATCH_TABLES, words, width, dim),
+                7 => self.batch_lanes::<7, false>(&NO_BATCH_TABLES, words, width, dim),
+                8 => self.batch_lanes::<8, false>(&NO_BATCH_TABLES, words, width, dim),
                 _ => unreachable!("scalar steps are 3 to 8 bits"),
             }
         }
     }
 
+    /// [`LANES`] words at a time through the batch tables `t` (PACKED) or the split tables.
     fn batch_lanes<const SB: u32, const PACKED: bool>(
         &self,
+        t: &BatchTables,
         words: &mut [u64],
         width: Width,
         dim: u32,
@@ -218,7 +337,7 @@ impl ArtOwen {
             use super::GROUPS;
             let mut blocks = words.chunks_exact_mut(GROUPS * LANES);
             for block in &mut blocks {
-                self.gather_block::<SB>(block, root, a, d, w);
+                self.gather_block::<SB>(t, block, root, a, d, w);
             }
             let rest = blocks.into_remainder();
             if rest.len() >= PADDED_BLOCK_MIN {
@@ -226,7 +345,7 @@ impl ArtOwen {
                 // PADDED_BLOCK_MIN words cost in the portable lanes (3 ns against 9 ns a word).
                 let mut block = [0u64; GROUPS * LANES];
                 block[..rest.len()].copy_from_slice(rest);
-                self.gather_block::<SB>(&mut block, root, a, d, w);
+                self.gather_block::<SB>(t, &mut block, root, a, d, w);
                 rest.copy_from_slice(&block[..rest.len()]);
                 &mut []
             } else {
@@ -240,7 +359,7 @@ impl ArtOwen {
             let chunk: &mut [u64; LANES] = chunk.try_into().expect("chunks_exact");
             let x: [u64; LANES] = std::array::from_fn(|l| chunk[l] ^ a);
             let out = if PACKED {
-                let (acc, s) = walk_portable::<SB>(&self.batch_table, x, w, steps, root);
+                let (acc, s) = walk_portable::<SB>(&t.table, x, w, steps, root);
                 self.finish_packed(&x, w, steps * SB, acc, s)
             } else {
                 self.lanes_wide::<SB>(x, w, steps, root)
@@ -258,29 +377,27 @@ impl ArtOwen {
     /// scrambler's gather kernel, scrambled in place.
     #[cfg(target_arch = "x86_64")]
     #[inline(always)]
-    fn gather_block<const SB: u32>(&self, block: &mut [u64], root: u32, a: u64, d: u64, w: u32) {
+    fn gather_block<const SB: u32>(
+        &self,
+        t: &BatchTables,
+        block: &mut [u64],
+        root: u32,
+        a: u64,
+        d: u64,
+        w: u32,
+    ) {
         use super::simd::{walk_avx512, walk_avx512_narrow};
         let steps = w / SB;
         // SAFETY: the gather kernels are chosen only where the CPU reported AVX-512F, and
-        // the constructor checked the table invariants the kernels need.
+        // `BatchTables::build` checked the table invariants the kernels need.
         let walked = unsafe {
-            if self.kernel == BatchKernel::Avx512 || self.batch_narrow.is_empty() {
-                walk_avx512::<SB>(
-                    &self.batch_table,
-                    &self.codes,
-                    self.q(),
-                    block,
-                    a,
-                    d,
-                    w,
-                    steps,
-                    root,
-                )
+            if self.kernel == BatchKernel::Avx512 || t.narrow.is_empty() {
+                walk_avx512::<SB>(&t.table, &self.codes, self.q(), block, a, d, w, steps, root)
             } else {
                 walk_avx512_narrow::<SB>(
-                    &self.batch_table,
-                    &self.batch_narrow,
-                    &self.codes_top,
+                    &t.table,
+                    &t.narrow,
+                    &t.codes_top,
                     self.q(),
                     block,
                     a,

@@ -34,7 +34,7 @@ mod batch;
 #[cfg(target_arch = "x86_64")]
 mod simd;
 
-pub use batch::{BatchKernel, BATCH_TABLE_BYTES};
+pub use batch::{BatchKernel, BATCH_TABLES_AFTER_WORDS, BATCH_TABLE_BYTES};
 
 /// Chains the batch path advances together: enough independent loads in flight to hide an L2
 /// hit (one 512-bit register of the gather kernel).
@@ -132,18 +132,16 @@ pub struct ArtOwen {
     step_local: Vec<u16>,
     step_carry: Vec<u64>,
     /// Digits per step of the batch path's table (up to 8 bits per step while the table stays
-    /// within [`batch::BATCH_TABLE_BYTES`]).
+    /// within [`batch::BATCH_TABLE_BYTES`]); 0 when the alphabet has more than 2^16 symbols
+    /// and there is no batch table.
     batch_digits: u32,
-    /// The batch path's step table for words of at most 32 bits, one u64 per entry: the top
-    /// 32 bits of the step's contribution (see [`batch`]) above the next symbol. Empty when
-    /// the alphabet has more than 2^16 symbols.
-    batch_table: Vec<u64>,
-    /// The batch table's steps after the first as 32-bit entries (see [`batch::narrow`]);
-    /// empty unless the symbols fit in a step's bits.
-    batch_narrow: Vec<u32>,
-    /// The top 32 bits of each symbol's code, for the narrow kernel's tail digit (empty
-    /// with the narrow table).
-    codes_top: Vec<u32>,
+    /// The batch path's tables for words of at most 32 bits ([`batch::BatchTables`]), built
+    /// once enough words have gone through the batch path to pay for them
+    /// ([`BATCH_TABLES_AFTER_WORDS`]): most instances of a statistical battery scramble a few
+    /// hundred words, and building the tables would cost them more than the words do.
+    batch: std::sync::OnceLock<batch::BatchTables>,
+    /// Words the batch path has scrambled so far (until the batch tables exist).
+    batch_words: batch::WordsSeen,
     /// The code that walks the batch path's lanes.
     kernel: BatchKernel,
     /// Root symbols and shifts of dimensions 0..CACHED_ROOTS.
@@ -188,10 +186,9 @@ impl ArtOwen {
             step_next: Vec::new(),
             step_local: Vec::new(),
             step_carry: Vec::new(),
-            batch_digits: 1,
-            batch_table: Vec::new(),
-            batch_narrow: Vec::new(),
-            codes_top: Vec::new(),
+            batch_digits: 0,
+            batch: std::sync::OnceLock::new(),
+            batch_words: batch::WordsSeen::default(),
             kernel: BatchKernel::detect(),
             dims: Vec::new(),
             dimension_rule,
@@ -203,31 +200,6 @@ impl ArtOwen {
         art.step_carry = steps.iter().map(|e| e.carry).collect();
         if art.grammar.symbols() <= 1 << 16 {
             art.batch_digits = batch::batch_digits(variant.q(), art.grammar.symbols());
-            let step_bits = art.batch_digits * variant.q();
-            art.batch_table = batch::pack(&art.build_steps(art.batch_digits), step_bits);
-            // The invariant the gather kernel's safety rests on (see `simd`): every index
-            // (symbol << step bits | digits) and every symbol read lies inside its table.
-            let symbols = art.grammar.symbols() as u64;
-            assert!(
-                art.batch_table.len() == (symbols as usize) << step_bits
-                    && art.codes.len() == symbols as usize
-                    && art.batch_table.iter().all(|e| e & 0xFFFF < symbols),
-                "batch table out of shape"
-            );
-            art.batch_narrow = batch::narrow(&art.batch_table, step_bits, symbols);
-            if !art.batch_narrow.is_empty() {
-                art.codes_top = art.codes.iter().map(|&c| (c >> 32) as u32).collect();
-            }
-            assert!(
-                art.batch_narrow.is_empty()
-                    || (art.batch_narrow.len() == art.batch_table.len()
-                        && art.codes_top.len() == art.codes.len()
-                        && art
-                            .batch_narrow
-                            .iter()
-                            .all(|&e| u64::from(e) & ((1 << step_bits) - 1) < symbols)),
-                "narrow table out of shape"
-            );
         }
         art
     }
@@ -526,8 +498,9 @@ impl Scrambler for ArtOwen {
         self.run(x, width, dim, false)
     }
 
-    /// Everything held, in bytes: child table, codes, ψ and ψ^{-1} images, the scalar step
-    /// tables, the batch table and the narrow table with the codes' top halves.
+    /// Everything held once the batch path is warm, in bytes: child table, codes, ψ and ψ^{-1}
+    /// images, the scalar step tables, the batch table and the narrow table with the codes'
+    /// top halves (the batch tables are built here if they were not yet).
     fn table_bytes(&self) -> usize {
         self.grammar.table_bytes()
             + self.codes.len() * 8
@@ -536,9 +509,7 @@ impl Scrambler for ArtOwen {
             + self.step_next.len() * 4
             + self.step_local.len() * 2
             + self.step_carry.len() * 8
-            + self.batch_table.len() * 8
-            + self.batch_narrow.len() * 4
-            + self.codes_top.len() * 4
+            + self.batch_tables().map_or(0, batch::BatchTables::bytes)
     }
 
     /// Interleaved chains through the step table (bit-identical to [`Scrambler::scramble`]).

@@ -311,6 +311,9 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
         (level, reports, inputs)
     };
     print_table(&reports)?;
+    if a.profile {
+        crate::outln!("{}", gartowen::battery::time_profile::render(&reports, 10));
+    }
     let failed = reports.iter().filter(|r| r.failed()).count();
     if let Some(path) = &a.junit {
         let certificate = a.json.as_ref().map(|p| p.display().to_string());

@@ -42,6 +42,7 @@ pub enum LevelArg {
 ///   gartowen verify --list-checks       (what the battery runs, and every size per level)
 ///   gartowen verify --level quick
 ///   gartowen verify --impl art-owen-16p --impl lk-hash --json verify.json
+///   gartowen verify --level quick --profile     (where the time goes: slowest checks, words)
 ///   gartowen verify --impl digital-shift --impl lk-hash --claim owen     (imitations fail)
 ///   gartowen verify --level exhaustive --shard 2/4 --json shard2.json     (one CI job of four)
 ///   gartowen verify --merge shard1.json shard2.json shard3.json shard4.json --json all.json
@@ -144,6 +145,11 @@ pub struct VerifyArgs {
     #[arg(long, conflicts_with_all = ["merge", "external", "dims", "shard", "implementations",
           "junit", "equivalent_to", "claim"])]
     pub list_checks: bool,
+    /// After the table, print where the time went: the 10 slowest (implementation, check)
+    /// entries with seconds and words scrambled, then totals per check and per
+    /// implementation (the seconds are also in the JSON, per check).
+    #[arg(long, conflicts_with_all = ["dims", "list_checks"])]
+    pub profile: bool,
 }
 
 /// The certificate's record of an external program: its command line and, where the program
