@@ -1,4 +1,4 @@
-//! End-to-end checks of the declared battery: `verify --list-checks`, and the `function`
+//! End-to-end checks of the declared battery: `verify --list-checks`, `verify --profile`, and the `function`
 //! structure check on a program that is not one.
 
 use crate::support::gartowen;
@@ -81,4 +81,67 @@ fn a_program_whose_answer_depends_on_the_request_is_not_a_function() {
         ],
         &["FAIL function: not a function"],
     );
+}
+
+#[test]
+fn the_time_profile_lists_the_slowest_checks_and_the_words_the_json_records() {
+    let dir = tempfile::tempdir().unwrap();
+    let json = dir.path().join("p.json");
+    let o = gartowen(&[
+        "verify",
+        "--impl",
+        "lk-hash",
+        "--impl",
+        "art-owen-8p",
+        "--profile",
+        "--json",
+        json.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0));
+    let text = String::from_utf8_lossy(&o.stdout).to_string();
+    assert!(text.contains("time profile: 2 implementations"), "{text}");
+    let v: serde_json::Value = serde_json::from_slice(&std::fs::read(&json).unwrap()).unwrap();
+    let imps = v["result"]["implementations"].as_array().unwrap();
+    // The slowest-entries block: ten lines, seconds never increasing, each an entry of the JSON.
+    let block: Vec<&str> = text
+        .lines()
+        .skip_while(|l| !l.contains("slowest 10 (implementation, check)"))
+        .skip(1)
+        .take_while(|l| l.starts_with("    "))
+        .collect();
+    assert_eq!(block.len(), 10, "{text}");
+    let seconds: Vec<f64> = block
+        .iter()
+        .map(|l| {
+            let at = l.find(" s ").expect("a seconds column");
+            l[..at].split_whitespace().last().unwrap().parse().unwrap()
+        })
+        .collect();
+    assert!(seconds.windows(2).all(|w| w[0] >= w[1]), "{seconds:?}");
+    // Per check, the words printed are the sum of the JSON's words over the implementations.
+    for family in ["node-law", "pair-law", "collisions"] {
+        let words: u64 = imps
+            .iter()
+            .flat_map(|r| r["checks"].as_array().unwrap())
+            .filter(|c| c["check"] == family)
+            .map(|c| c["words"].as_u64().expect("law checks count their words"))
+            .sum();
+        assert!(words > 0);
+        let line = text
+            .lines()
+            .skip_while(|l| !l.contains("per check:"))
+            .find(|l| l.trim_start().starts_with(family))
+            .unwrap_or_else(|| panic!("no {family} line in {text}"));
+        assert!(
+            line.trim_end().ends_with(&format!(" {words}")),
+            "{line} vs {words}"
+        );
+    }
+    // Structure checks do not count words.
+    assert!(imps[0]["checks"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|c| c["check"] == "nested")
+        .all(|c| c.get("words").is_none()));
 }

@@ -118,27 +118,25 @@ impl Gf2Matrix {
         Gf2Matrix::from_rows(q, &rows[..q as usize]).expect("product stays q×q")
     }
 
-    /// The rank over GF(2), by Gaussian elimination on the rows (no allocation).
+    /// The rank over GF(2), by elimination on the rows (no allocation): each row is reduced by
+    /// the basis rows kept so far, indexed by their leading bit, and joins the basis when
+    /// something is left.
     pub fn rank(&self) -> u32 {
-        let q = self.q as usize;
-        let mut rows = [0u8; 8];
-        for (i, r) in rows.iter_mut().enumerate().take(q) {
-            *r = self.row(i as u32);
-        }
+        let mut basis = [0u8; 8];
         let mut rank = 0;
-        for col in 0..q {
-            if let Some(p) = (rank..q).find(|&r| (rows[r] >> col) & 1 == 1) {
-                rows.swap(rank, p);
-                let pivot = rows[rank];
-                for (r, row) in rows.iter_mut().enumerate().take(q) {
-                    if r != rank && (*row >> col) & 1 == 1 {
-                        *row ^= pivot;
-                    }
+        for i in 0..self.q as u32 {
+            let mut row = self.row(i);
+            while row != 0 {
+                let lead = 7 - row.leading_zeros() as usize;
+                if basis[lead] == 0 {
+                    basis[lead] = row;
+                    rank += 1;
+                    break;
                 }
-                rank += 1;
+                row ^= basis[lead];
             }
         }
-        rank as u32
+        rank
     }
 
     /// Whether the matrix is invertible (rank q).
@@ -228,6 +226,32 @@ mod tests {
         assert_eq!(m.apply(0b01), 0b01);
         assert_eq!(m.apply(0b10), 0b11);
         assert!(Gf2Matrix::from_rows(2, &[0b100, 0]).is_err());
+    }
+
+    #[test]
+    fn the_rank_is_the_log_of_the_image_size() {
+        // Two paths: elimination against 2^rank distinct images A·x.
+        let mut rng = SplitMix64::new(9);
+        for q in 1..=8u32 {
+            for k in 0..200 {
+                let rows: Vec<u8> = (0..q)
+                    .map(|_| {
+                        let r = (rng.next_u64() as u8) & ((1u16 << q) - 1) as u8;
+                        // Sparse rows too, so that low ranks occur.
+                        if k % 2 == 0 {
+                            r & (rng.next_u64() as u8)
+                        } else {
+                            r
+                        }
+                    })
+                    .collect();
+                let m = Gf2Matrix::from_rows(q, &rows).unwrap();
+                let mut images: Vec<u32> = (0..1u32 << q).map(|x| m.apply(x)).collect();
+                images.sort_unstable();
+                images.dedup();
+                assert_eq!(1usize << m.rank(), images.len(), "{m:?}");
+            }
+        }
     }
 
     #[test]

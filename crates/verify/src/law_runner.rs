@@ -126,6 +126,65 @@ pub fn run_laws_timed(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use gartowen_core::{Claim, PowerOfTwoBase, Scrambler, Width};
+    use std::sync::atomic::{AtomicU64, Ordering};
+    use std::sync::Arc;
+
+    /// A base-4 nested scramble (a per-seed XOR) that counts every word it is asked for.
+    struct Counting {
+        seed: u64,
+        words: Arc<AtomicU64>,
+    }
+
+    impl Scrambler for Counting {
+        fn name(&self) -> String {
+            "counting".into()
+        }
+        fn base(&self) -> PowerOfTwoBase {
+            PowerOfTwoBase::B4
+        }
+        fn claim(&self) -> Claim {
+            Claim::NESTED
+        }
+        fn scramble(&self, x: u64, width: Width, _dim: u32) -> u64 {
+            self.words.fetch_add(1, Ordering::Relaxed);
+            (x ^ self.seed.wrapping_mul(0x9E37_79B9_7F4A_7C15)) & width.mask()
+        }
+    }
+
+    #[test]
+    fn the_words_each_family_reports_add_up_to_the_words_scrambled() {
+        let words = Arc::new(AtomicU64::new(0));
+        let counter = words.clone();
+        let c = Candidate::from_builder(
+            "counting",
+            Claim::NESTED,
+            Box::new(move |seed| {
+                Ok(Box::new(Counting {
+                    seed,
+                    words: counter.clone(),
+                }))
+            }),
+        )
+        .unwrap();
+        let before = words.load(Ordering::Relaxed);
+        let runs = run_laws_timed(&c, Level::Quick, 0).unwrap();
+        let scrambled = words.load(Ordering::Relaxed) - before;
+        let reported: u64 = runs.iter().map(|f| f.words).sum();
+        assert_eq!(reported, scrambled);
+        assert!(
+            runs.iter().all(|f| f.words > 0 && f.seconds >= 0.0),
+            "{runs:?}"
+        );
+        let names: Vec<&str> = runs.iter().map(|f| f.name).collect();
+        let declared: Vec<&str> = FAMILIES.iter().map(|f| f.name()).collect();
+        assert_eq!(names, declared);
+        // The untimed form returns the same sub-tests.
+        let plain = run_laws(&c, Level::Quick, 0).unwrap();
+        for (f, (name, tests)) in runs.iter().zip(&plain) {
+            assert_eq!((f.name, f.tests.len()), (*name, tests.len()));
+        }
+    }
 
     #[test]
     fn families_have_distinct_names_and_state_what_they_require() {

@@ -194,10 +194,14 @@ impl ArtOwen {
             dimension_rule,
         };
         art.dims = (0..CACHED_ROOTS).map(|d| art.hashed_dim(d)).collect();
-        let steps = art.build_steps(art.step_digits);
-        art.step_next = steps.iter().map(|e| e.next).collect();
-        art.step_local = steps.iter().map(|e| e.local as u16).collect();
-        art.step_carry = steps.iter().map(|e| e.carry).collect();
+        if art.step_digits == 1 {
+            art.build_single_digit_steps();
+        } else {
+            let steps = art.build_steps(art.step_digits);
+            art.step_next = steps.iter().map(|e| e.next).collect();
+            art.step_local = steps.iter().map(|e| e.local as u16).collect();
+            art.step_carry = steps.iter().map(|e| e.carry).collect();
+        }
         if art.grammar.symbols() <= 1 << 16 {
             art.batch_digits = batch::batch_digits(variant.q(), art.grammar.symbols());
         }
@@ -228,6 +232,30 @@ impl ArtOwen {
             }
         }
         out
+    }
+
+    /// The split step tables for steps of one digit (q ≥ 5), written directly: the entry of
+    /// (s, d) is [`ArtOwen::build_steps`]'s for m = 1 — carry T[s], next child(s, d), local
+    /// ψ_s(d) ⊕ T[s]'s top digit — without the intermediate list (for 256 symbols in base
+    /// 256 the tables have 65,536 entries and dominated an instance's construction).
+    fn build_single_digit_steps(&mut self) {
+        let q = self.q();
+        let n = (self.grammar.symbols() as usize) << q;
+        let (mut next, mut local, mut carry) = (
+            Vec::with_capacity(n),
+            Vec::with_capacity(n),
+            Vec::with_capacity(n),
+        );
+        for s in 0..self.grammar.symbols() {
+            let code = self.codes[s as usize];
+            let top = (code >> (64 - q)) as u32;
+            for d in 0..1u32 << q {
+                next.push(self.child(s, d));
+                local.push((self.psi_apply(s, d) ^ top) as u16);
+                carry.push(code);
+            }
+        }
+        (self.step_next, self.step_local, self.step_carry) = (next, local, carry);
     }
 
     /// The variant.
