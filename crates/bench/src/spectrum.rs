@@ -14,32 +14,46 @@
 pub fn power_spectrum(points: &[[f64; 2]], max_freq: usize) -> Vec<f64> {
     let f = max_freq as i64;
     let side = (2 * f + 1) as usize;
-    // Separable phases: e^{−2πi f x} per point and frequency, then one product per (f0, f1).
-    let phases = |coord: usize| -> Vec<Vec<(f64, f64)>> {
-        points
-            .iter()
-            .map(|p| {
-                (-f..=f)
-                    .map(|k| {
-                        let a = -2.0 * std::f64::consts::PI * k as f64 * p[coord];
-                        (a.cos(), a.sin())
-                    })
-                    .collect()
-            })
-            .collect()
+    // Separable phases e^{−2πi k x} per point and frequency, point-major: row j holds the
+    // `side` frequencies of point j (real and imaginary parts apart).
+    let phases = |coord: usize| -> (Vec<f64>, Vec<f64>) {
+        let (mut re, mut im) = (
+            Vec::with_capacity(points.len() * side),
+            Vec::with_capacity(points.len() * side),
+        );
+        for p in points {
+            for k in -f..=f {
+                let a = -2.0 * std::f64::consts::PI * k as f64 * p[coord];
+                re.push(a.cos());
+                im.push(a.sin());
+            }
+        }
+        (re, im)
     };
-    let (e0, e1) = (phases(0), phases(1));
+    let ((c0, s0), (c1, s1)) = (phases(0), phases(1));
     let n = points.len() as f64;
     let mut out = vec![0.0; side * side];
+    // For each row f₁, every column's sum runs over the points in order (the same bits as a
+    // sum per entry); the columns advance together, so the inner loop is contiguous.
+    let (mut re, mut im) = (vec![0.0; side], vec![0.0; side]);
     for r in 0..side {
-        for c in 0..side {
-            let (mut re, mut im) = (0.0, 0.0);
-            for j in 0..points.len() {
-                let (a, b) = (e0[j][c], e1[j][r]);
-                re += a.0 * b.0 - a.1 * b.1;
-                im += a.0 * b.1 + a.1 * b.0;
+        re.iter_mut().for_each(|v| *v = 0.0);
+        im.iter_mut().for_each(|v| *v = 0.0);
+        for j in 0..points.len() {
+            let (b0, b1) = (c1[j * side + r], s1[j * side + r]);
+            let row = j * side..(j + 1) * side;
+            for (((re, im), &a0), &a1) in re
+                .iter_mut()
+                .zip(im.iter_mut())
+                .zip(&c0[row.clone()])
+                .zip(&s0[row])
+            {
+                *re += a0 * b0 - a1 * b1;
+                *im += a0 * b1 + a1 * b0;
             }
-            out[r * side + c] = (re * re + im * im) / n;
+        }
+        for c in 0..side {
+            out[r * side + c] = (re[c] * re[c] + im[c] * im[c]) / n;
         }
     }
     out
@@ -109,6 +123,31 @@ mod tests {
             im += a.sin();
         }
         (re * re + im * im) / points.len() as f64
+    }
+
+    #[test]
+    fn the_columns_together_give_the_bits_of_one_sum_per_entry() {
+        // One entry at a time, the points in order: the evaluation's own products and sums.
+        let mut rng = SplitMix64::new(8);
+        let pts: Vec<[f64; 2]> = (0..77).map(|_| [rng.next_f64(), rng.next_f64()]).collect();
+        let f = 5i64;
+        let phase = |k: i64, x: f64| {
+            let a = -2.0 * std::f64::consts::PI * k as f64 * x;
+            (a.cos(), a.sin())
+        };
+        let p = power_spectrum(&pts, f as usize);
+        for f1 in -f..=f {
+            for f0 in -f..=f {
+                let (mut re, mut im) = (0.0, 0.0);
+                for q in &pts {
+                    let ((a0, a1), (b0, b1)) = (phase(f0, q[0]), phase(f1, q[1]));
+                    re += a0 * b0 - a1 * b1;
+                    im += a0 * b1 + a1 * b0;
+                }
+                let at = ((f1 + f) * (2 * f + 1) + f0 + f) as usize;
+                assert_eq!(p[at].to_bits(), ((re * re + im * im) / 77.0).to_bits());
+            }
+        }
     }
 
     #[test]

@@ -138,10 +138,15 @@ fn rel(a: f64, exact: &BigRational) -> f64 {
     ((a - e) / e).abs()
 }
 
-#[test]
-fn compensated_and_fast_meet_1e12_on_scrambled_sobol_where_naive_drifts() {
-    // 2-D, 2^16 points: L2-star exact via the fast path (itself checked against exact above).
-    let words = scrambled_sobol(1 << 16, 2);
+/// How far naive summation is off at least on 2^14 scrambled Sobol points in 2-D (measured:
+/// 1.4e-3).
+const NAIVE_OFF_AT_2_POW_14: f64 = 1e-4;
+
+/// 2-D L2-star on 2^log2n scrambled Sobol points against the exact value of the fast path
+/// (itself checked against exact above): compensated within 1e-12 and its own bound, naive
+/// off by more than `naive_off_by` (its error grows with N: about 1e-1 at 2^16).
+fn compensated_meets_1e12_where_naive_drifts(log2n: u32, naive_off_by: f64) {
+    let words = scrambled_sobol(1 << log2n, 2);
     let p = Points {
         words: &words,
         dims: 2,
@@ -156,12 +161,28 @@ fn compensated_and_fast_meet_1e12_on_scrambled_sobol_where_naive_drifts() {
         rel(c.value, &truth)
     );
     assert!(rel(c.value, &truth) <= c.rel_error_bound.unwrap() + 1e-16);
+    assert!(
+        rel(nv.value, &truth) > naive_off_by,
+        "naive {:e}",
+        rel(nv.value, &truth)
+    );
     eprintln!(
-        "2-D 2^16 L2*: D² = {:e}; naive rel. error {:e}, compensated {:e}",
+        "2-D 2^{log2n} L2*: D² = {:e}; naive rel. error {:e}, compensated {:e}",
         rational::to_f64(&truth),
         rel(nv.value, &truth),
         rel(c.value, &truth)
     );
+}
+
+#[test]
+#[ignore = "large tier (scripts/test-large.sh): 2^16 points, about a minute"]
+fn compensated_meets_1e12_on_2_pow_16_scrambled_sobol_points_where_naive_is_off_by_1e_2() {
+    compensated_meets_1e12_where_naive_drifts(16, 1e-2);
+}
+
+#[test]
+fn compensated_and_fast_meet_1e12_on_scrambled_sobol_where_naive_drifts() {
+    compensated_meets_1e12_where_naive_drifts(14, NAIVE_OFF_AT_2_POW_14);
     // Every kind in 2-D at 2^13 and in 16-D at 2^12 against the exact integer path.
     for (n, d) in [(1usize << 13, 2usize), (1 << 12, 16)] {
         let words = scrambled_sobol(n, d);

@@ -30,16 +30,25 @@ fn random_sequence(seed: u64, dims: usize, width: Width) -> DigitalSequence {
     DigitalSequence::from_columns("random", width, PowerOfTwoBase::B2, &cols).unwrap()
 }
 
-#[test]
-fn sobol_pairs_of_the_first_32_dims_agree_for_m_1_to_20() {
-    // Counting over 2^m points versus rank of the generator matrices, all 496 pairs, m ≤ 20.
+/// Counting over 2^m points against the rank of the generator matrices for pairs of the first
+/// 32 Sobol dimensions: every pair up to m = `every_pair_to`, then up to m = 20 the pairs
+/// `sampled` (every pair when `None`). Returns the t-values found, keyed (i, j, m).
+fn sobol_pair_t_values(
+    every_pair_to: u32,
+    sampled: Option<&[[usize; 2]]>,
+) -> std::collections::BTreeMap<(usize, usize, u32), u32> {
     let seq = sobol::sequence(32, Width::W32).unwrap();
     let base = CheckBase::new(2).unwrap();
-    let pairs = ProjectionSpec::Pairs.expand(32).unwrap();
+    let all_pairs = ProjectionSpec::Pairs.expand(32).unwrap();
+    assert_eq!(all_pairs.len(), 496);
     let all_points = points(&seq, &(0..32).collect::<Vec<_>>(), 1 << 20);
     let mut table = std::collections::BTreeMap::new();
     for m in 1..=20u32 {
         let prefix = all_points.prefix(1 << m);
+        let pairs: Vec<Vec<usize>> = match sampled {
+            Some(sample) if m > every_pair_to => sample.iter().map(|p| p.to_vec()).collect(),
+            _ => all_pairs.clone(),
+        };
         for pair in &pairs {
             let by_rank = rank::t_value(&seq, pair, 1, m).unwrap();
             let by_count = t_value(&prefix.project(pair).unwrap(), base, m).unwrap();
@@ -47,8 +56,12 @@ fn sobol_pairs_of_the_first_32_dims_agree_for_m_1_to_20() {
             table.insert((pair[0], pair[1], m), by_rank);
         }
     }
-    // A sample frozen as a regression table (both paths agree on it above). Dimensions 0 and 1
-    // form a (0,2)-sequence; pairs with higher dimensions reach larger t.
+    table
+}
+
+/// A sample frozen as a regression table (both paths agree on it). Dimensions 0 and 1 form a
+/// (0,2)-sequence; pairs with higher dimensions reach larger t.
+fn assert_sobol_golden(table: &std::collections::BTreeMap<(usize, usize, u32), u32>) {
     for m in 1..=20 {
         assert_eq!(table[&(0, 1, m)], 0);
     }
@@ -62,6 +75,43 @@ fn sobol_pairs_of_the_first_32_dims_agree_for_m_1_to_20() {
     for (key, t) in golden {
         assert_eq!(table[&key], t, "golden {key:?}");
     }
+}
+
+#[test]
+fn sobol_pairs_of_the_first_32_dims_agree_to_m_14_and_a_sample_to_m_20() {
+    // All 496 pairs to m = 14; beyond, the golden pairs and a spread of 11 others (every
+    // dimension 0..31 appears). The whole sweep to m = 20 is the large tier's test below.
+    let sample = [
+        [0, 1],
+        [0, 2],
+        [1, 2],
+        [30, 31],
+        [3, 17],
+        [4, 29],
+        [5, 23],
+        [6, 11],
+        [8, 27],
+        [9, 14],
+        [10, 21],
+        [12, 19],
+        [13, 26],
+        [15, 24],
+        [16, 28],
+        [7, 18],
+        [20, 25],
+        [22, 31],
+    ];
+    let table = sobol_pair_t_values(14, Some(&sample));
+    assert_eq!(table.len(), 496 * 14 + sample.len() * 6);
+    assert_sobol_golden(&table);
+}
+
+#[test]
+#[ignore = "large tier (scripts/test-large.sh): every pair to m = 20, about 4 minutes"]
+fn sobol_pairs_of_the_first_32_dims_agree_for_m_1_to_20() {
+    let table = sobol_pair_t_values(20, None);
+    assert_eq!(table.len(), 496 * 20);
+    assert_sobol_golden(&table);
 }
 
 #[test]
