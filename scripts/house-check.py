@@ -229,8 +229,32 @@ def main(argv):
                 print(f"  {os.path.relpath(p, root)}: {n} lines")
     if over == 0:
         print("  none")
+    untiered = ignored_outside_the_large_tier(root)
     newer = 0 if skip_dependencies else msrv_violations(root)
-    return 1 if bad or over or newer else 0
+    return 1 if bad or over or untiered or newer else 0
+
+
+def ignored_outside_the_large_tier(root):
+    """Ignored tests must belong to the large tier that scripts/test-large.sh runs."""
+    print('#[ignore] tests not marked "large tier (scripts/test-large.sh)":')
+    found = 0
+    for dirpath, dirnames, filenames in os.walk(root):
+        dirnames[:] = [d for d in dirnames if d not in ("target", ".git", ".venv")]
+        for f in sorted(filenames):
+            if not f.endswith(".rs"):
+                continue
+            p = os.path.join(dirpath, f)
+            with open(p, encoding="utf-8", errors="replace") as fh:
+                for k, line in enumerate(fh, 1):
+                    s = line.strip()
+                    if s.startswith("#[ignore") and not s.startswith(
+                        '#[ignore = "large tier (scripts/test-large.sh)'
+                    ):
+                        found += 1
+                        print(f"  {os.path.relpath(p, root)}:{k}: {s}")
+    if found == 0:
+        print("  none")
+    return found
 
 
 def version_key(v):

@@ -1,5 +1,5 @@
 //! `scripts/house-check.py` on synthetic crates: it finds a cycle between siblings (and only
-//! there), an oversized file, and passes a layered crate.
+//! there), an oversized file, an ignored test outside the large tier, and passes a layered crate.
 
 use std::path::Path;
 use std::process::Command;
@@ -88,4 +88,26 @@ fn a_file_over_the_limit_is_listed_unless_generated() {
     assert!(!out.contains("table.rs"), "{out}");
     let (code, _) = house_check(dir.path(), &["--max-lines", "12"]);
     assert_eq!(code, 0, "12 lines are within a limit of 12");
+}
+
+#[test]
+fn an_ignored_test_outside_the_large_tier_is_named() {
+    let dir = crate_with(&[
+        ("lib.rs", "pub mod a;\n"),
+        (
+            "a.rs",
+            "#[test]\n#[ignore = \"large tier (scripts/test-large.sh): 2^20 points\"]\nfn big() {}\n",
+        ),
+    ]);
+    let (code, out) = house_check(dir.path(), &[]);
+    assert_eq!(code, 0, "{out}");
+    write(
+        dir.path(),
+        "c/src/b.rs",
+        "#[test]\n#[ignore]\nfn forgotten() {}\n",
+    );
+    let (code, out) = house_check(dir.path(), &[]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("src/b.rs:2: #[ignore]"), "{out}");
+    assert!(!out.contains("a.rs"), "{out}");
 }
