@@ -24,7 +24,7 @@ pub mod testing;
 /// The conformance battery (`gartowen verify`), from the `gartowen-verify` crate.
 pub mod verify {
     pub use gartowen_verify::battery::*;
-    pub use gartowen_verify::sampling::SeedBuilder;
+    pub use gartowen_verify::sampling::{ManySeeds, SeedBuilder};
     pub use gartowen_verify::subtest::{Requirement, SubTest};
     pub use gartowen_verify::{
         collisions, dimensions, family, flip_rank, law_runner, level, marginal, nets, pair_law,

@@ -3,7 +3,9 @@
 
 Write the scrambler as fn(words, dim, seed) -> words, where words is a 1-D uint32 array of
 32-bit words (value = word * 2^-32), dim the dimension and seed an integer in [0, 2^64); it
-returns the scrambled words, same shape and dtype. gartowen.verify runs the battery that
+returns the scrambled words, same shape and dtype. Written elementwise in (words, seed), as
+below, it also takes many seeds per call (batch_seeds=True: words of shape (rows, n), seeds
+of shape (rows, 1)), which makes the battery about ten times faster. gartowen.verify runs the battery that
 `gartowen verify` runs on built-in and external implementations: structure exactly
 (injectivity, nestedness, nets kept), randomness by marginal and joint laws over seeds 0, 1,
 2, ..., judged on what you claim, at a family-wise false-alarm rate of 1e-3.
@@ -35,15 +37,16 @@ def mix64(z):
 
 
 def key_of(seed, dim):
-    """A 64-bit key per (seed, dim), computed on Python ints (no overflow warnings)."""
-    z = (seed * 0x9E3779B97F4A7C15 + dim + 1) & MASK
-    return int(mix64(np.array([z], dtype=np.uint64))[0])
+    """A 64-bit key per (seed, dim): shape (1,) for an int seed, else the seeds' shape.
+    Arrays, not NumPy scalars, so that the wrapping multiplication raises no warning."""
+    s = np.array([seed], dtype=np.uint64) if isinstance(seed, int) else seed
+    return mix64(s * np.uint64(0x9E3779B97F4A7C15) + np.uint64(dim + 1))
 
 
 def my_owen(words, dim, seed):
     """Binary Owen scrambling: output bit k flips iff a hash of (key, k, top k input bits) is odd."""
     x = words.astype(np.uint64)
-    key = np.uint64(key_of(seed, dim))
+    key = key_of(seed, dim)
     y = x.copy()
     for k in range(32):
         prefix = (x >> np.uint64(32 - k)) if k else np.zeros_like(x)
@@ -55,7 +58,7 @@ def my_owen(words, dim, seed):
 
 def my_shift(words, dim, seed):
     """A random digital shift: y = x XOR s(seed, dim)."""
-    return words ^ np.uint32(key_of(seed, dim) >> 32)
+    return words ^ (key_of(seed, dim) >> np.uint64(32)).astype(np.uint32)
 
 
 def main():
@@ -65,7 +68,7 @@ def main():
         (my_shift, "marginal:translation", True),
         (my_shift, "owen", False),
     ]:
-        r = gartowen.verify(fn, base=2, width=32, claims=claim)
+        r = gartowen.verify(fn, base=2, width=32, claims=claim, batch_seeds=True)
         print(r)
         print()
         ok &= r.passed == expect_pass

@@ -270,7 +270,7 @@ fn discrepancy(
 /// words and seconds spent in the function, and the battery's wall seconds. Re-raises the
 /// function's first exception.
 #[pyfunction]
-#[pyo3(signature = (func, name, base, width, level, claim, seed, expect))]
+#[pyo3(signature = (func, name, base, width, level, claim, seed, expect, batch_seeds))]
 #[allow(clippy::too_many_arguments)]
 fn verify(
     py: Python<'_>,
@@ -282,6 +282,7 @@ fn verify(
     claim: &str,
     seed: u64,
     expect: Option<String>,
+    batch_seeds: bool,
 ) -> PyResult<(String, u64, u64, f64, f64)> {
     let base_value = PowerOfTwoBase::from_base(base)
         .map_err(|e| PyValueError::new_err(format!("base {base}: {e}")))?;
@@ -338,6 +339,12 @@ fn verify(
         // The structural checks use the caller's seed; the laws use seeds 0, 1, 2, ….
         candidate.probe = (candidate.with_seed)(seed)?;
         candidate.health = Box::new(move || watched.failed());
+        if batch_seeds {
+            let many = function.clone();
+            candidate.many = Some(Box::new(move |words: &[u64], _width, dim, first, count| {
+                Ok(many.call_many(words, dim, first, count))
+            }));
+        }
         candidate.twin = expect.as_deref().map(|twin| {
             (
                 twin.to_string(),
@@ -366,7 +373,7 @@ fn verify(
             "family_alpha": gartowen::verify::stats::FAMILY_ALPHA,
             "claim_override": claim,
             "python": { "function": name, "base": base, "width": width, "seed": seed,
-                        "expect": expect, "claim": report.claim },
+                        "expect": expect, "claim": report.claim, "batch_seeds": batch_seeds },
         }),
         gartowen::verify::seeds_used(seed),
         vec![InputRecord {

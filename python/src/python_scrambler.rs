@@ -2,7 +2,8 @@
 //! the same battery as built-in scramblers and external programs.
 //!
 //! Every batch the battery asks for becomes one call with a uint32 (32-bit words) or uint64
-//! array. The first exception (raised by the function, or a reply of the wrong shape, type or
+//! array; a function that takes many seeds at once ([`PythonFunction::call_many`]) gets the
+//! words of a run of seeds as one 2-D array, one row per seed. The first exception (raised by the function, or a reply of the wrong shape, type or
 //! range) is kept; later batches return zeros without calling Python, the battery's health
 //! check marks the checks after it, and `verify` re-raises the exception.
 
@@ -73,7 +74,7 @@ impl PythonFunction {
             words.fill(0);
             return;
         }
-        let result = Python::attach(|py| self.call_attached(py, words, dim, seed));
+        let result = Python::attach(|py| self.call_attached(py, words, 0, dim, seed));
         if let Err(e) = result {
             words.fill(0);
             let mut slot = self.error.lock().expect("error slot");
@@ -83,19 +84,56 @@ impl PythonFunction {
         }
     }
 
+    /// Scrambles `words` for seeds `first..first + count` in one call (`fn(words, dim, seeds)`
+    /// with words of shape (count, n) and seeds a uint64 array of shape (count, 1)): row i of
+    /// the result is seed `first + i`'s. On any error the words become 0.
+    pub fn call_many(&self, words: &[u64], dim: u32, first: u64, count: u64) -> Vec<u64> {
+        let mut out: Vec<u64> = (0..count).flat_map(|_| words.iter().copied()).collect();
+        if out.is_empty() || self.error.lock().expect("error slot").is_some() {
+            out.fill(0);
+            return out;
+        }
+        let result =
+            Python::attach(|py| self.call_attached(py, &mut out, count as usize, dim, first));
+        if let Err(e) = result {
+            out.fill(0);
+            let mut slot = self.error.lock().expect("error slot");
+            if slot.is_none() {
+                *slot = Some(e);
+            }
+        }
+        out
+    }
+
+    /// Calls the function on `words` with `dim` and stores its reply in `words`: for `rows` = 0
+    /// a 1-D array and the seed `first`, else `rows` rows of equal length (row-major) and the
+    /// seeds `first + i` as a (rows, 1) array.
     fn call_attached(
         &self,
         py: Python<'_>,
         words: &mut [u64],
+        rows: usize,
         dim: u32,
-        seed: u64,
+        first: u64,
     ) -> PyResult<()> {
+        let shape = [rows, words.len() / rows.max(1)];
+        let seed = if rows == 0 {
+            first.into_pyobject(py)?.into_any()
+        } else {
+            let seeds: Vec<u64> = (0..rows as u64).map(|i| first.wrapping_add(i)).collect();
+            PyArray1::from_vec(py, seeds).reshape([rows, 1])?.into_any()
+        };
         let input = match self.width {
             Width::W32 => {
                 let v: Vec<u32> = words.iter().map(|&x| x as u32).collect();
                 PyArray1::from_vec(py, v).into_any()
             }
             _ => PyArray1::from_slice(py, words).into_any(),
+        };
+        let input = if shape[0] == 0 {
+            input
+        } else {
+            input.call_method1("reshape", (shape[0], shape[1]))?
         };
         let started = Instant::now();
         let reply = self.func.bind(py).call1((input, dim, seed));
@@ -115,20 +153,29 @@ impl PythonFunction {
                     .unwrap_or_else(|_| "?".into())
             ))
         })?;
-        if array.shape() != [words.len()] {
+        let want: Vec<usize> = if shape[0] == 0 {
+            vec![words.len()]
+        } else {
+            shape.to_vec()
+        };
+        if array.shape() != want.as_slice() {
             return Err(PyValueError::new_err(format!(
-                "{what} shape {:?} for an input of shape ({},)",
+                "{what} shape {:?} for an input of shape {:?}",
                 array.shape(),
-                words.len()
+                want
             )));
         }
+        // A C-ordered copy, so that the words read back in the order they were sent.
+        let array = array.call_method1("ravel", ())?;
+        let array = array.cast::<PyUntypedArray>()?;
         let dt = array.dtype();
         let mask = self.width.mask();
         let mut store = |k: usize, y: u64| -> PyResult<()> {
             if y & !mask != 0 {
                 return Err(PyValueError::new_err(format!(
-                    "{what} {y:#x} for word {:#x} (dim {dim}, seed {seed}): not a {}-bit word",
+                    "{what} {y:#x} for word {:#x} (dim {dim}, seed {}): not a {}-bit word",
                     words[k],
+                    first.wrapping_add((k / shape[1].max(1)) as u64 * u64::from(rows > 0)),
                     self.width.bits()
                 )));
             }

@@ -38,10 +38,21 @@ def mix64(z):
     return z ^ (z >> np.uint64(31))
 
 
+def seed_key(seed, dim):
+    """hash_words(seed, dim) for an int seed, or elementwise for a uint64 array of seeds."""
+    if isinstance(seed, np.ndarray):
+        gamma = np.uint64(GAMMA)
+        h = mix64(gamma ^ mix64(seed.astype(np.uint64) + gamma))
+        return mix64(h ^ np.uint64(mix64_int((dim + GAMMA) & MASK)))
+    return np.uint64(hash_words_int(seed, dim))
+
+
 def owen_per_bit(words, dim, seed):
+    """Elementwise in (words, seed): with a (rows, 1) array of seeds and (rows, n) words, row i
+    is seed i's scramble (``gartowen.verify(..., batch_seeds=True)``)."""
     width = 32 if words.dtype == np.uint32 else 64
     x = words.astype(np.uint64)
-    key = np.uint64(hash_words_int(seed, dim))
+    key = seed_key(seed, dim)
     y = x.copy()
     for k in range(width):
         prefix = x >> np.uint64(width - k) if k else np.zeros_like(x)

@@ -29,6 +29,31 @@ def test_numpy_owen_scramble_passes_and_matches_its_twin():
     assert r.python_words >= r.python_calls
 
 
+def _without_clocks(report):
+    """The report with its timings and word counts left out."""
+    return {
+        **report,
+        "checks": [
+            {k: v for k, v in c.items() if k not in ("seconds", "words")}
+            for c in report["checks"]
+        ],
+    }
+
+
+def test_many_seeds_per_call_give_the_same_report_in_far_fewer_calls():
+    one = gartowen.verify(owen_per_bit, 2, 32, expect="owen-per-bit-hash")
+    many = gartowen.verify(owen_per_bit, 2, 32, expect="owen-per-bit-hash", batch_seeds=True)
+    assert many.passed, str(many)
+    assert _without_clocks(many.report) == _without_clocks(one.report)
+    assert many.certificate["parameters"]["python"]["batch_seeds"] is True
+    assert many.python_calls * 20 < one.python_calls, (many.python_calls, one.python_calls)
+    # A function that ignores the rows (returns one seed's words) is refused by shape.
+    with pytest.raises(ValueError, match="shape"):
+        gartowen.verify(lambda w, d, s: w.ravel(), 2, 32, batch_seeds=True)
+    with pytest.raises(TypeError, match="batch_seeds"):
+        gartowen.verify(owen_per_bit, 2, 32, batch_seeds="yes")
+
+
 def test_digital_shift_claiming_owen_fails_on_joint_laws():
     r = gartowen.verify(digital_shift, 2, 32, claims="owen")
     assert not r.passed

@@ -1,7 +1,7 @@
 //! The implementations the battery judges, however they are reached: registry entries,
 //! external programs, or any in-process builder of instances per seed.
 
-use crate::sampling::SeedBuilder;
+use crate::sampling::{ManySeeds, SeedBuilder};
 use gartowen_core::{BuildContext, Claim, CoreError, PowerOfTwoBase, Registry, Scrambler};
 
 /// One implementation as the battery sees it, however it is reached (registry or external).
@@ -14,6 +14,8 @@ pub struct Candidate<'a> {
     pub probe: Box<dyn Scrambler + 'a>,
     /// Instances for other seeds (the node law draws thousands).
     pub with_seed: Box<SeedBuilder<'a>>,
+    /// Many seeds per call, where the implementation offers it (the law passes then use it).
+    pub many: Option<Box<ManySeeds<'a>>>,
     /// A failure of the transport, checked after every check (external programs).
     pub health: Box<dyn Fn() -> Option<String> + 'a>,
     /// A built-in twin the implementation must agree with bit for bit (`--expect`).
@@ -35,6 +37,7 @@ impl<'a> Candidate<'a> {
             name: name.into(),
             probe: with_seed(0)?,
             with_seed,
+            many: None,
             health: Box::new(|| None),
             twin: None,
             claim,
@@ -75,6 +78,7 @@ pub fn registry_candidate<'a>(
         claim: probe.claim(),
         probe,
         with_seed: registry_seeds(registry, request, base),
+        many: None,
         health: Box::new(|| None),
         twin: None,
     })
@@ -113,6 +117,7 @@ pub fn external_candidate<'a>(
         with_seed: Box::new(move |s| {
             Ok(Box::new(ExternalScrambler::new(for_seed.clone(), s, claim)))
         }),
+        many: None,
         health: Box::new(move || watched.failure().map(|e| e.to_string())),
         twin: twin.map(|(registry, request)| {
             (request.to_string(), registry_seeds(registry, request, base))

@@ -9,7 +9,7 @@
 
 use crate::error::BatteryError;
 use crate::level::LevelPlan;
-use crate::sampling::{evaluate, Outputs, Probe, SeedBuilder, Tree};
+use crate::sampling::{evaluate_with, ManySeeds, Outputs, Probe, SeedBuilder, Tree};
 use crate::subtest::{Requirement, SubTest};
 use gartowen_core::{Claim, NodeGroup, Width};
 
@@ -43,6 +43,8 @@ impl LawConfig {
 pub struct OwnPass<'a, 'b> {
     /// Instances per seed.
     pub with_seed: &'a SeedBuilder<'b>,
+    /// Many seeds per call, where the implementation offers it.
+    pub many: Option<&'a ManySeeds<'b>>,
     /// The width words are scrambled at.
     pub width: Width,
     /// The run's first seed.
@@ -55,8 +57,9 @@ impl OwnPass<'_, '_> {
     /// Scrambles `probes` for seeds `seed_base + first + i`, i in `0..max(probe.seeds)`.
     pub fn evaluate(&self, first: u64, probes: &[Probe]) -> Result<Outputs, BatteryError> {
         self.words.set(self.words.get() + words_of(probes));
-        evaluate(
+        evaluate_with(
             self.with_seed,
+            self.many,
             self.width,
             self.seed_base.wrapping_add(first),
             probes,

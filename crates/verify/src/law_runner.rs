@@ -13,7 +13,7 @@ use crate::level::Level;
 use crate::marginal::NodeLaw;
 use crate::pair_law::PairLaw;
 use crate::pair_lemma::PairLemma;
-use crate::sampling::{evaluate, Probe, Tree};
+use crate::sampling::{evaluate_with, Probe, Tree};
 use crate::structure::working_width;
 use crate::subtest::SubTest;
 use gartowen_core::DigitLayout;
@@ -79,7 +79,13 @@ pub fn run_laws_timed(
     let groups: Vec<Vec<Probe>> = FAMILIES.iter().map(|f| f.shared_probes(&cfg)).collect();
     let all: Vec<Probe> = groups.iter().flatten().cloned().collect();
     let started = Instant::now();
-    let outputs = evaluate(c.with_seed.as_ref(), width, seed_base, &all)?;
+    let outputs = evaluate_with(
+        c.with_seed.as_ref(),
+        c.many.as_deref(),
+        width,
+        seed_base,
+        &all,
+    )?;
     let evaluation = started.elapsed().as_secs_f64();
     let total_words = words_of(&all).max(1);
     let mut shared = Vec::with_capacity(FAMILIES.len());
@@ -106,6 +112,7 @@ pub fn run_laws_timed(
         .map(|(family, (shared_tests, seconds, words))| {
             let pass = OwnPass {
                 with_seed: c.with_seed.as_ref(),
+                many: c.many.as_deref(),
                 width,
                 seed_base,
                 words: Cell::new(0),

@@ -16,6 +16,16 @@ use rayon::prelude::*;
 pub type SeedBuilder<'a> =
     dyn Fn(u64) -> Result<Box<dyn Scrambler + 'a>, String> + Send + Sync + 'a;
 
+/// Scrambles the same words for consecutive seeds in one call: given `(words, width, dim,
+/// first, count)`, returns `count · words.len()` words, seed `first + i`'s scramble of
+/// `words[k]` at `i · words.len() + k`. Offered by implementations whose calls cost more than
+/// their words (a Python function); it must equal the instances of [`SeedBuilder`] word for word.
+pub type ManySeeds<'a> =
+    dyn Fn(&[u64], Width, u32, u64, u64) -> Result<Vec<u64>, String> + Send + Sync + 'a;
+
+/// The most words one [`ManySeeds`] call is given (seeds × words per seed).
+pub const MANY_SEEDS_WORDS: usize = 1 << 20;
+
 /// Words to scramble in one dimension for the first `seeds` seeds.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Probe {
@@ -30,6 +40,76 @@ pub struct Probe {
 /// Outputs of a run: `[seed][probe]` holds the scrambled words (empty when the probe was not
 /// evaluated for that seed).
 pub type Outputs = Vec<Vec<Vec<u64>>>;
+
+/// [`evaluate`], through `many` when the implementation offers it: for each dimension and
+/// each run of seeds that need the same probes, one call per [`MANY_SEEDS_WORDS`] words
+/// instead of one per seed. The outputs are the same.
+pub fn evaluate_with(
+    with_seed: &SeedBuilder,
+    many: Option<&ManySeeds>,
+    width: Width,
+    seed_base: u64,
+    probes: &[Probe],
+) -> Result<Outputs, BatteryError> {
+    let Some(many) = many else {
+        return evaluate(with_seed, width, seed_base, probes);
+    };
+    let seeds = probes.iter().map(|p| p.seeds).max().unwrap_or(0);
+    let mut out: Outputs = vec![vec![Vec::new(); probes.len()]; seeds as usize];
+    let mut dims: Vec<u32> = probes.iter().map(|p| p.dim).collect();
+    dims.sort_unstable();
+    dims.dedup();
+    for dim in dims {
+        // Seeds lo..hi need the same probes: those of this dimension asking for ≥ hi seeds.
+        let mut bounds: Vec<u64> = probes
+            .iter()
+            .filter(|p| p.dim == dim)
+            .map(|p| p.seeds)
+            .collect();
+        bounds.sort_unstable();
+        bounds.dedup();
+        let mut lo = 0;
+        for hi in bounds {
+            let active: Vec<usize> = (0..probes.len())
+                .filter(|&k| probes[k].dim == dim && probes[k].seeds >= hi)
+                .collect();
+            let words: Vec<u64> = active
+                .iter()
+                .flat_map(|&k| probes[k].words.iter().copied())
+                .collect();
+            let per_call = (MANY_SEEDS_WORDS / words.len().max(1)).max(1) as u64;
+            let mut first = lo;
+            while first < hi {
+                let count = per_call.min(hi - first);
+                let seed = seed_base.wrapping_add(first);
+                let scrambled = many(&words, width, dim, seed, count)
+                    .map_err(|message| BatteryError::Instance { seed, message })?;
+                if scrambled.len() != words.len() * count as usize {
+                    return Err(BatteryError::Instance {
+                        seed,
+                        message: format!(
+                            "{} words back for {} seeds of {} words",
+                            scrambled.len(),
+                            count,
+                            words.len()
+                        ),
+                    });
+                }
+                for (i, row) in scrambled.chunks(words.len().max(1)).enumerate() {
+                    let mut at = 0;
+                    for &k in &active {
+                        let n = probes[k].words.len();
+                        out[(first + i as u64) as usize][k] = row[at..at + n].to_vec();
+                        at += n;
+                    }
+                }
+                first += count;
+            }
+            lo = hi;
+        }
+    }
+    Ok(out)
+}
 
 /// Scrambles every probe for seeds `seed_base + i`, i in `0..max(probe.seeds)`.
 pub fn evaluate(
@@ -184,6 +264,79 @@ mod tests {
         assert_eq!(
             refused.to_string(),
             "no instance for seed 7: the license server is down"
+        );
+    }
+
+    #[test]
+    fn many_seeds_per_call_give_the_outputs_of_one_instance_per_seed() {
+        use std::sync::atomic::{AtomicU64, Ordering};
+        // A per-seed XOR-multiply scramble, as instances and as one call for many seeds.
+        let scramble = |x: u64, dim: u32, seed: u64| {
+            (x ^ seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ u64::from(dim) << 7) & 0xFFFF_FFFF
+        };
+        struct Keyed<F>(u64, F);
+        impl<F: Fn(u64, u32, u64) -> u64 + Send + Sync> gartowen_core::Scrambler for Keyed<F> {
+            fn name(&self) -> String {
+                "keyed".into()
+            }
+            fn base(&self) -> gartowen_core::PowerOfTwoBase {
+                gartowen_core::PowerOfTwoBase::B2
+            }
+            fn claim(&self) -> gartowen_core::Claim {
+                gartowen_core::Claim::NESTED
+            }
+            fn scramble(&self, x: u64, _w: Width, dim: u32) -> u64 {
+                (self.1)(x, dim, self.0)
+            }
+        }
+        let builder: Box<SeedBuilder> = Box::new(move |seed| Ok(Box::new(Keyed(seed, scramble))));
+        let calls = AtomicU64::new(0);
+        let many = |words: &[u64], _w: Width, dim: u32, first: u64, count: u64| {
+            calls.fetch_add(1, Ordering::Relaxed);
+            Ok((0..count)
+                .flat_map(|i| words.iter().map(move |&x| scramble(x, dim, first + i)))
+                .collect())
+        };
+        // Two dimensions, probes needing 3, 5 and 700 seeds; one probe large enough that a
+        // call holds fewer seeds than its run.
+        let probes = vec![
+            Probe {
+                dim: 1,
+                words: vec![1, 2, 3],
+                seeds: 5,
+            },
+            Probe {
+                dim: 0,
+                words: vec![7],
+                seeds: 3,
+            },
+            Probe {
+                dim: 1,
+                words: (0..2000).collect(),
+                seeds: 700,
+            },
+            Probe {
+                dim: 0,
+                words: vec![9, 10],
+                seeds: 700,
+            },
+        ];
+        let one_by_one = evaluate(builder.as_ref(), Width::W32, 40, &probes).unwrap();
+        let batched =
+            evaluate_with(builder.as_ref(), Some(&many), Width::W32, 40, &probes).unwrap();
+        assert_eq!(batched, one_by_one);
+        // dim 0: seeds 0..3 and 3..700; dim 1: 0..5, then 5..700 in calls of ≤ 524 seeds.
+        assert_eq!(calls.load(Ordering::Relaxed), 5);
+        // A reply of the wrong length is an error naming the first seed of the call.
+        let short = |_: &[u64], _: Width, _: u32, _: u64, _: u64| Ok(vec![0u64]);
+        let e = evaluate_with(builder.as_ref(), Some(&short), Width::W32, 40, &probes[..1])
+            .unwrap_err();
+        assert_eq!(
+            e,
+            BatteryError::Instance {
+                seed: 40,
+                message: "1 words back for 5 seeds of 3 words".into()
+            }
         );
     }
 

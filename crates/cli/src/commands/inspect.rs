@@ -190,6 +190,7 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
             // A closure borrowing the builder for this block only (the laws below take it).
             #[allow(clippy::redundant_closure)]
             with_seed: Box::new(|seed| with_seed(seed)),
+            many: None,
             health: Box::new(|| None),
             twin: None,
             claim: s.claim(),
@@ -239,6 +240,7 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
             name,
             probe,
             with_seed,
+            many: None,
             health: Box::new(|| None),
             twin: None,
             claim,
