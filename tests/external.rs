@@ -325,7 +325,14 @@ fn a_failing_program_fails_every_check_with_the_reason() {
     let p = spawn("sh -c 'exec sleep 30'", Width::W32, 200);
     let c = external_candidate(Arc::new(p), 0, Claim::OWEN, None);
     let r = check_candidate(&c, Level::Quick, 1);
+    // Nothing was measured: no sub-test and no profile row claims a deviation.
+    assert!(r.profile.is_empty(), "{:?}", r.profile);
     for check in &r.checks {
+        assert!(
+            check.tests.is_empty() && check.p_value.is_none(),
+            "{}",
+            check.check
+        );
         assert_eq!(check.verdict, Verdict::Fail);
         assert!(
             check

@@ -274,7 +274,14 @@ fn build_example(dir: &std::path::Path, name: &str) -> String {
 #[test]
 fn external_programs_are_verified_with_a_certificate() {
     let dir = tempfile::tempdir().unwrap();
-    let good = build_example(dir.path(), "owen_per_bit");
+    let built = build_example(dir.path(), "owen_per_bit");
+    // In a folder with a long name, so that the command is longer than the name column.
+    let folder = dir
+        .path()
+        .join("a-folder-whose-name-is-longer-than-the-name-column");
+    std::fs::create_dir(&folder).unwrap();
+    let good = folder.join("owen_per_bit").to_str().unwrap().to_string();
+    std::fs::copy(&built, &good).unwrap();
     let broken = build_example(dir.path(), "broken_hash");
     let cert = dir.path().join("ext.json");
     let o = gartowen(&[
@@ -296,6 +303,18 @@ fn external_programs_are_verified_with_a_certificate() {
         "{}",
         String::from_utf8_lossy(&o.stdout)
     );
+    // The command line (a temporary path) is longer than the name column: it gets a line of
+    // its own, and the claim stays in the claim column.
+    let text = String::from_utf8_lossy(&o.stdout);
+    let header = text.lines().next().unwrap();
+    let at = header.find("claim").unwrap();
+    let name_line = text
+        .lines()
+        .position(|l| l == format!("external:{good}"))
+        .unwrap();
+    let row = text.lines().nth(name_line + 1).unwrap();
+    assert_eq!(row.find("owen"), Some(at), "{text}");
+    assert!(row[..at].trim().is_empty(), "{text}");
     let v: serde_json::Value = serde_json::from_slice(&std::fs::read(&cert).unwrap()).unwrap();
     assert_eq!(v["schema"], "gartowen-certificate");
     assert_eq!(v["verdict"], "pass");
@@ -365,19 +384,24 @@ fn inspect_runs_the_laws_on_an_external_program() {
     assert_eq!(o.status.code(), Some(1), "{text}");
     assert!(text.contains("nested scramble in base 2"), "{text}");
     assert!(text.contains("pair-law    fail      depth 0→ -x"), "{text}");
+    // Without --width an external program gets 32-bit words (the protocol's narrowest).
     let o = gartowen(&[
         "inspect",
         "--external",
         &good,
         "--base",
         "2",
-        "--width",
-        "32",
         "--laws",
         "--json",
     ]);
-    assert_eq!(o.status.code(), Some(0));
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["report"]["width"], 32);
     assert_eq!(v["claim"], "owen");
     assert!(v["laws"]
         .as_array()

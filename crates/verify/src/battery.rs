@@ -134,12 +134,16 @@ fn run_structure(c: &Candidate, check: &StructureCheck, plan: &LevelPlan) -> Che
 /// divisor of [`crate::stats::FAMILY_ALPHA`]).
 pub fn check_candidate(c: &Candidate, level: Level, judged: usize) -> ImplReport {
     let plan = level.plan();
-    // A transport failure turns the check that met it into a failure naming it.
+    // A transport failure turns the check that met it into a failure naming it; its
+    // sub-tests measured the failure's zeros, not the program, so they are dropped (and the
+    // profile shows nothing for it rather than deviations at every depth).
     let guard = |mut r: CheckResult| {
         if let Some(e) = (c.health)() {
             r.verdict = Verdict::Fail;
             r.detail = format!("external program failed: {e}");
             r.value = None;
+            r.p_value = None;
+            r.tests.clear();
         }
         r
     };

@@ -24,6 +24,8 @@ pub struct CollisionPlan {
     pub seeds: u64,
     /// log2 of P(two independent subtrees collide) under the claimed law.
     pub log2_pair_probability: f64,
+    /// That law, as a claim names it (`independent:symmetric` for Owen).
+    pub law: String,
 }
 
 /// Words scrambled per depth and seed by the collision test (bounds its memory: seeds are
@@ -88,6 +90,7 @@ pub fn collision_plan(cfg: &LawConfig) -> Option<CollisionPlan> {
         depths,
         seeds,
         log2_pair_probability,
+        law: format!("independent:{}", cfg.group().name()),
     })
 }
 
@@ -174,9 +177,10 @@ fn collision_tests(plan: &CollisionPlan, counts: &[(u64, Option<String>)]) -> Ve
                 * plan.log2_pair_probability.exp2();
             SubTest {
                 name: format!(
-                    "depth {k}: {collisions} equal height-{h} subtrees among {} nodes × {} seeds (Owen: {lambda:.1e}){}",
+                    "depth {k}: {collisions} equal height-{h} subtrees among {} nodes × {} seeds (expected under {}: {lambda:.1e}){}",
                     prefixes.len(),
                     plan.seeds,
+                    plan.law,
                     example
                         .as_ref()
                         .map_or(String::new(), |e| format!(", e.g. under node {e}"))
@@ -230,5 +234,40 @@ impl LawFamily for Collisions {
             add_collision_counts(&mut totals, collision_counts(cfg, &plan, &views));
         }
         Ok(collision_tests(&plan, &totals))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::level::Level;
+    use crate::sampling::Tree;
+    use gartowen_core::{Claim, DigitLayout, PowerOfTwoBase, Width};
+
+    fn config(claim: &str) -> LawConfig {
+        LawConfig {
+            tree: Tree::new(DigitLayout::new(Width::W32, PowerOfTwoBase::B4)),
+            claim: Claim::parse(claim).unwrap(),
+            plan: *Level::Quick.plan(),
+        }
+    }
+
+    #[test]
+    fn the_expected_count_is_named_by_the_law_it_assumes() {
+        for (claim, law) in [
+            ("owen", "independent:symmetric"),
+            ("independent:cyclic", "independent:cyclic"),
+            ("independent:translation", "independent:translation"),
+        ] {
+            let plan = collision_plan(&config(claim)).expect("a plan in base 4");
+            assert_eq!(plan.law, law);
+            let counts = vec![(0u64, None); plan.depths.len()];
+            let tests = collision_tests(&plan, &counts);
+            assert!(
+                tests[0].name.contains(&format!("(expected under {law}: ")),
+                "{}",
+                tests[0].name
+            );
+        }
     }
 }

@@ -52,9 +52,10 @@ pub struct InspectArgs {
     /// Base B = 2^q in which to test nestedness (also the default base of the scrambler).
     #[arg(long)]
     pub base: u64,
-    /// Word width in bits (≤ 16 exhaustive; 32 or 64 by probes).
-    #[arg(long, default_value_t = 16)]
-    pub width: u32,
+    /// Word width in bits (≤ 16 exhaustive; 32 or 64 by probes). Default: 16, or 32 with
+    /// --external (the protocol carries 32- or 64-bit words).
+    #[arg(long)]
+    pub width: Option<u32>,
     /// Depth K (digits) to which node permutations are reconstructed (default: all).
     #[arg(long)]
     pub depth: Option<u32>,
@@ -166,14 +167,17 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
         refuse_clobbering(&[named("--external", &program)], &[named("--junit", junit)])?;
     }
     let base = PowerOfTwoBase::from_base(a.base)?;
-    let width = Width::new(a.width)?;
+    let bits = a
+        .width
+        .unwrap_or(if a.external.is_some() { 32 } else { 16 });
+    let width = Width::new(bits)?;
     let (with_seed, process) = builder(&a, base, width)?;
     let s = with_seed(a.seed).map_err(CliError::Usage)?;
     if !s.supports_width(width) {
         return Err(CliError::Usage(format!(
             "{} does not support {}-bit words",
             s.name(),
-            a.width
+            bits
         )));
     }
     if process.is_some() {
@@ -218,7 +222,7 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
     }
     let depth = a.depth.unwrap_or(u32::MAX);
     let f = |x: u64| s.scramble(x, width, a.dim);
-    let report = if a.width <= 16 {
+    let report = if bits <= 16 {
         inspect_exhaustive(&f, width, base, depth)
     } else {
         if a.probes == 0 {

@@ -377,6 +377,9 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
     }))
 }
 
+/// The widest the implementation column grows (characters).
+const NAME_COLUMN: usize = 40;
+
 /// The verdict table: one row per implementation, one column per check, then the failures
 /// and the per-depth profile of the law checks.
 fn print_table(reports: &[ImplReport]) -> Result<(), CliError> {
@@ -384,13 +387,31 @@ fn print_table(reports: &[ImplReport]) -> Result<(), CliError> {
         return Ok(());
     };
     let names: Vec<&str> = first.checks.iter().map(|c| c.check.as_str()).collect();
-    let mut header = format!("{:<26} {:<22}", "implementation", "claim");
+    // Columns as wide as their longest entry, the name column at most NAME_COLUMN: a longer
+    // name (an external command line) gets a line of its own above its row.
+    let width = |text: &str| text.chars().count();
+    let name_column = reports
+        .iter()
+        .map(|r| width(&r.name))
+        .filter(|&w| w <= NAME_COLUMN)
+        .fold(26, usize::max);
+    let claim_column = reports.iter().map(|r| width(&r.claim)).fold(22, usize::max);
+    let mut header = format!(
+        "{:<name_column$} {:<claim_column$}",
+        "implementation", "claim"
+    );
     for n in &names {
         header.push_str(&format!(" {n:<11}"));
     }
     crate::outln!("{}", header.trim_end());
     for r in reports {
-        let mut row = format!("{:<26} {:<22}", r.name, r.claim);
+        let name = if width(&r.name) > name_column {
+            crate::outln!("{}", r.name);
+            ""
+        } else {
+            r.name.as_str()
+        };
+        let mut row = format!("{name:<name_column$} {:<claim_column$}", r.claim);
         for c in &r.checks {
             let v = match c.verdict {
                 Verdict::Pass => "pass",
