@@ -48,6 +48,35 @@ fn quick_report_writes_figures_and_the_baseline_gate_works() {
     }
     let md = std::fs::read_to_string(path("a/report.md")).unwrap();
     assert!(md.contains("## Convergence slopes"));
+    // The status line counts the methods report.md lists as missing the rate, and their fits
+    // (the ✗ cells of scrambled methods).
+    let listed = md
+        .lines()
+        .find_map(|l| l.strip_prefix("Scrambled methods that miss the predicted rate: "))
+        .unwrap()
+        .trim_end_matches('.');
+    let status = String::from_utf8_lossy(&o.stdout);
+    let said = status
+        .split("scrambled methods missing the predicted slope: ")
+        .nth(1)
+        .unwrap()
+        .trim();
+    if listed == "none" {
+        assert_eq!(said, "none");
+    } else {
+        let fits = md
+            .lines()
+            .filter(|l| l.starts_with("| ") && !l.starts_with("| random") && !l.contains("+none"))
+            .map(|l| l.matches(" ✗").count())
+            .sum::<usize>();
+        assert_eq!(
+            said,
+            format!(
+                "{} ({fits} fits; listed in report.md)",
+                listed.split(", ").count()
+            )
+        );
+    }
     assert!(md.contains("| owen-oracle:base=16 | 16 |"));
     // How close to Owen: the variance columns, the identity at ratio 0.
     assert!(md.contains("var. ratio level 1"));

@@ -57,15 +57,13 @@ pub fn markdown(report: &Report, figures: &[String], regressions: Option<&[Regre
             .collect();
         md += &format!("| {} | {} |\n", m.label, cells.join(" | "));
     }
-    let misses = report.missed_slopes();
+    let misses = report.methods_missing_slopes();
     md += &format!(
         "\nScrambled methods that miss the predicted rate: {}.\n\n",
         if misses.is_empty() {
             "none".to_string()
         } else {
-            let mut names: Vec<String> = misses.iter().map(|s| s.method.clone()).collect();
-            names.dedup();
-            names.join(", ")
+            misses.join(", ")
         }
     );
     md += "## Speed and randomization quality\n\n\

@@ -162,6 +162,17 @@ impl Report {
             .filter(|s| !s.meets && !s.method.ends_with("+none") && s.method != "random")
             .collect()
     }
+
+    /// The scrambled methods with at least one missed slope, each once, in report order.
+    pub fn methods_missing_slopes(&self) -> Vec<String> {
+        let mut names: Vec<String> = Vec::new();
+        for s in self.missed_slopes() {
+            if !names.contains(&s.method) {
+                names.push(s.method.clone());
+            }
+        }
+        names
+    }
 }
 
 /// Why a report could not be made.

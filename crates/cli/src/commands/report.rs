@@ -96,16 +96,20 @@ pub fn run(a: ReportArgs) -> Result<ExitCode, CliError> {
     let written = write_report(&report, &registry, &a.out, baseline.as_ref());
     crate::cleanup::unregister(&staging);
     let regressions = written.map_err(cli_error)?;
-    let misses = report.missed_slopes();
+    let (methods, fits) = (report.methods_missing_slopes(), report.missed_slopes());
     crate::outln!(
         "report in {} ({} methods, {:.1} s); scrambled methods missing the predicted slope: {}",
         a.out.display(),
         report.methods.len(),
         report.seconds,
-        if misses.is_empty() {
+        if methods.is_empty() {
             "none".into()
         } else {
-            misses.len().to_string()
+            format!(
+                "{} ({} fits; listed in report.md)",
+                methods.len(),
+                fits.len()
+            )
         }
     );
     for r in &regressions {
