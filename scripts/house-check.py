@@ -213,20 +213,15 @@ def main(argv):
         print("  none")
     print(f"Rust files over {limit} lines (generated files excepted):")
     over = 0
-    for dirpath, dirnames, filenames in os.walk(root):
-        dirnames[:] = [d for d in dirnames if d not in ("target", ".git", ".venv")]
-        for f in sorted(filenames):
-            if not f.endswith(".rs"):
-                continue
-            p = os.path.join(dirpath, f)
-            with open(p, encoding="utf-8", errors="replace") as fh:
-                lines = fh.read().split("\n")
-            if lines and GENERATED_MARK in lines[0]:
-                continue
-            n = len(lines) - (1 if lines and lines[-1] == "" else 0)
-            if n > limit:
-                over += 1
-                print(f"  {os.path.relpath(p, root)}: {n} lines")
+    for p in rust_files(root):
+        with open(p, encoding="utf-8", errors="replace") as fh:
+            lines = fh.read().split("\n")
+        if lines and GENERATED_MARK in lines[0]:
+            continue
+        n = len(lines) - (1 if lines and lines[-1] == "" else 0)
+        if n > limit:
+            over += 1
+            print(f"  {os.path.relpath(p, root)}: {n} lines")
     if over == 0:
         print("  none")
     untiered = ignored_outside_the_large_tier(root)
@@ -234,24 +229,28 @@ def main(argv):
     return 1 if bad or over or untiered or newer else 0
 
 
+def rust_files(root):
+    """Every .rs file under root, build and environment folders left out, in a fixed order."""
+    for dirpath, dirnames, filenames in os.walk(root):
+        dirnames[:] = sorted(d for d in dirnames if d not in ("target", ".git", ".venv"))
+        for f in sorted(filenames):
+            if f.endswith(".rs"):
+                yield os.path.join(dirpath, f)
+
+
 def ignored_outside_the_large_tier(root):
     """Ignored tests must belong to the large tier that scripts/test-large.sh runs."""
     print('#[ignore] tests not marked "large tier (scripts/test-large.sh)":')
     found = 0
-    for dirpath, dirnames, filenames in os.walk(root):
-        dirnames[:] = [d for d in dirnames if d not in ("target", ".git", ".venv")]
-        for f in sorted(filenames):
-            if not f.endswith(".rs"):
-                continue
-            p = os.path.join(dirpath, f)
-            with open(p, encoding="utf-8", errors="replace") as fh:
-                for k, line in enumerate(fh, 1):
-                    s = line.strip()
-                    if s.startswith("#[ignore") and not s.startswith(
-                        '#[ignore = "large tier (scripts/test-large.sh)'
-                    ):
-                        found += 1
-                        print(f"  {os.path.relpath(p, root)}:{k}: {s}")
+    for p in rust_files(root):
+        with open(p, encoding="utf-8", errors="replace") as fh:
+            for k, line in enumerate(fh, 1):
+                s = line.strip()
+                if s.startswith("#[ignore") and not s.startswith(
+                    '#[ignore = "large tier (scripts/test-large.sh)'
+                ):
+                    found += 1
+                    print(f"  {os.path.relpath(p, root)}:{k}: {s}")
     if found == 0:
         print("  none")
     return found

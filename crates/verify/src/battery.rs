@@ -249,30 +249,14 @@ pub fn verify_shard(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::verdict::fixtures;
 
     fn report(index: usize, checks: &[&str]) -> ImplReport {
-        ImplReport {
-            index,
-            name: format!("impl-{index}"),
-            base: 2,
-            claims_nested_uniform: false,
-            claim: "nested".into(),
-            checks: checks
-                .iter()
-                .map(|c| CheckResult {
-                    check: c.to_string(),
-                    verdict: Verdict::Pass,
-                    detail: String::new(),
-                    value: None,
-                    seconds: 0.0,
-                    words: None,
-                    p_value: None,
-                    alpha: None,
-                    tests: Vec::new(),
-                })
-                .collect(),
-            profile: Vec::new(),
-        }
+        let checks = checks
+            .iter()
+            .map(|c| fixtures::check(c, 0.0, None))
+            .collect();
+        fixtures::report(index, &format!("impl-{index}"), checks)
     }
 
     #[test]

@@ -102,31 +102,14 @@ pub fn render(reports: &[ImplReport], top: usize) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::verdict::{CheckResult, Verdict};
+    use crate::verdict::fixtures;
 
     fn report(name: &str, checks: &[(&str, f64, Option<u64>)]) -> ImplReport {
-        ImplReport {
-            index: 0,
-            name: name.into(),
-            base: 2,
-            claims_nested_uniform: true,
-            claim: "owen".into(),
-            checks: checks
-                .iter()
-                .map(|&(check, seconds, words)| CheckResult {
-                    check: check.into(),
-                    verdict: Verdict::Pass,
-                    detail: String::new(),
-                    value: None,
-                    seconds,
-                    words,
-                    p_value: None,
-                    alpha: None,
-                    tests: Vec::new(),
-                })
-                .collect(),
-            profile: Vec::new(),
-        }
+        let checks = checks
+            .iter()
+            .map(|&(check, seconds, words)| fixtures::check(check, seconds, words))
+            .collect();
+        fixtures::report(0, name, checks)
     }
 
     #[test]

@@ -116,3 +116,37 @@ impl Outcome {
         }
     }
 }
+
+/// Reports built by hand for the tests of other modules (merging, the time profile).
+#[cfg(test)]
+pub(crate) mod fixtures {
+    use super::{CheckResult, ImplReport, Verdict};
+
+    /// A passing check `name` that took `seconds` and scrambled `words`.
+    pub fn check(name: &str, seconds: f64, words: Option<u64>) -> CheckResult {
+        CheckResult {
+            check: name.into(),
+            verdict: Verdict::Pass,
+            detail: String::new(),
+            value: None,
+            seconds,
+            words,
+            p_value: None,
+            alpha: None,
+            tests: Vec::new(),
+        }
+    }
+
+    /// Implementation `name` at position `index` with `checks`, claiming `nested`.
+    pub fn report(index: usize, name: &str, checks: Vec<CheckResult>) -> ImplReport {
+        ImplReport {
+            index,
+            name: name.into(),
+            base: 2,
+            claims_nested_uniform: false,
+            claim: "nested".into(),
+            checks,
+            profile: Vec::new(),
+        }
+    }
+}
