@@ -216,6 +216,10 @@ fn batch_tables_are_built_once_the_words_pay_for_them_and_change_no_output() {
         assert!(!art.batch_tables_built(), "{}", variant.name());
         check(&art, &rest[..after - 2001], "still short");
         assert!(!art.batch_tables_built(), "{} built early", variant.name());
+        // A clone keeps the count: its next words pay as the original's would.
+        let twin = art.clone();
+        check(&twin, &rest[after - 2001..], "the clone's word that pays");
+        assert!(twin.batch_tables_built() && !art.batch_tables_built());
         check(&art, &rest[after - 2001..], "the word that pays");
         assert!(art.batch_tables_built(), "{} never built", variant.name());
         check(&art, &small, "after");
