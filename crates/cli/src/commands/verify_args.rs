@@ -8,7 +8,7 @@ use std::path::PathBuf;
 /// Battery size.
 #[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
 pub enum LevelArg {
-    /// Under a minute for the whole registry on 2 cores.
+    /// About 6 s for the whole registry on 2 cores (the CI gate).
     Quick,
     /// Larger samples and deeper nets.
     Full,
