@@ -170,12 +170,17 @@ impl PythonFunction {
         let array = array.cast::<PyUntypedArray>()?;
         let dt = array.dtype();
         let mask = self.width.mask();
+        // The seed word k was scrambled with: row k / n of a 2-D call, else the one seed.
+        let seed_of = |k: usize| match rows {
+            0 => first,
+            _ => first.wrapping_add((k / shape[1]) as u64),
+        };
         let mut store = |k: usize, y: u64| -> PyResult<()> {
             if y & !mask != 0 {
                 return Err(PyValueError::new_err(format!(
                     "{what} {y:#x} for word {:#x} (dim {dim}, seed {}): not a {}-bit word",
                     words[k],
-                    first.wrapping_add((k / shape[1].max(1)) as u64 * u64::from(rows > 0)),
+                    seed_of(k),
                     self.width.bits()
                 )));
             }
