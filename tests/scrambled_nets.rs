@@ -120,7 +120,7 @@ fn every_registered_scrambler_keeps_nets_in_every_base_it_is_nested_in() {
             }
             for base in nested_bases(s.base()) {
                 bases_checked.insert(base.base());
-                if let Err(e) = check_base(s.as_ref(), Width::W32, base, Level::Quick) {
+                if let Err(e) = check_base(s.as_ref(), Width::W32, base, Level::Quick, None) {
                     panic!("{} (base {}): {e}", s.name(), s.base().base());
                 }
             }
@@ -152,6 +152,7 @@ fn a_scrambler_whose_base_the_net_is_not_nested_in_breaks_it_on_an_instance() {
                 Width::W32,
                 PowerOfTwoBase::from_q(net_q).unwrap(),
                 Level::Quick,
+                None,
             )
             .err()
         });

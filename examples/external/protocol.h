@@ -3,7 +3,11 @@
  *
  * A scrambler includes this file, defines
  *     uint64_t scramble(uint64_t x, unsigned width, uint32_t base, uint32_t dim, uint64_t seed);
- * and calls serve(argv[0]) from main. */
+ * and calls serve(argv[0]) from main.
+ *
+ * Built with -DSERVED_DIMS=N, the program serves dimensions 0..N-1 only and exits with status 4
+ * on a request for another (a sampler with N dimensions per domain); verify it with
+ * `gartowen verify --external ./prog --max-dims N`. */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -42,6 +46,12 @@ static int serve(const char *self) {
                     version, width, count);
             return 3;
         }
+#ifdef SERVED_DIMS
+        if (dim >= SERVED_DIMS) {
+            fprintf(stderr, "%s: dimension %u not served (0..%u)\n", self, dim, SERVED_DIMS - 1);
+            return 4;
+        }
+#endif
         unsigned wb = width / 8;
         if (fread(buf, wb, count, stdin) != count) {
             fprintf(stderr, "%s: truncated request\n", self);

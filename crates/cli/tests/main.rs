@@ -20,3 +20,4 @@ mod support;
 mod sweep;
 mod verify;
 mod verify_declared;
+mod verify_dims;

@@ -26,6 +26,7 @@ pub use crate::verdict::{CheckResult, ImplReport, Verdict};
 
 use crate::error::MergeError;
 use crate::law_runner::run_laws_timed;
+use crate::subtest::SubTest;
 use gartowen_core::{Claim, CoreError, Progress, Registry, Silent};
 use rayon::prelude::*;
 use std::time::Instant;
@@ -135,15 +136,22 @@ fn run_structure(c: &Candidate, check: &StructureCheck, plan: &LevelPlan) -> Che
 pub fn check_candidate(c: &Candidate, level: Level, judged: usize) -> ImplReport {
     let plan = level.plan();
     // A transport failure turns the check that met it into a failure naming it; its
-    // sub-tests measured the failure's zeros, not the program, so they are dropped (and the
-    // profile shows nothing for it rather than deviations at every depth).
+    // sub-tests measured the failure's zeros, not the program, so they count as not run (the
+    // profile shows `?` for them, never deviations).
     let guard = |mut r: CheckResult| {
         if let Some(e) = (c.health)() {
             r.verdict = Verdict::Fail;
             r.detail = format!("external program failed: {e}");
             r.value = None;
             r.p_value = None;
-            r.tests.clear();
+            for t in &mut r.tests {
+                *t = SubTest::not_run(
+                    std::mem::take(&mut t.name),
+                    t.depth,
+                    t.requires,
+                    "external program failed",
+                );
+            }
         }
         r
     };

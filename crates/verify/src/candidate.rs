@@ -22,6 +22,9 @@ pub struct Candidate<'a> {
     pub twin: Option<(String, Box<SeedBuilder<'a>>)>,
     /// What the implementation is judged on (its own claim unless overridden).
     pub claim: Claim,
+    /// It serves dimensions 0..N only (`--max-dims N`): checks use no others, and those
+    /// that need one say "not run". `None`: every dimension.
+    pub max_dims: Option<u32>,
 }
 
 impl<'a> Candidate<'a> {
@@ -41,6 +44,7 @@ impl<'a> Candidate<'a> {
             health: Box::new(|| None),
             twin: None,
             claim,
+            max_dims: None,
         })
     }
 }
@@ -81,6 +85,7 @@ pub fn registry_candidate<'a>(
         many: None,
         health: Box::new(|| None),
         twin: None,
+        max_dims: None,
     })
 }
 
@@ -122,5 +127,6 @@ pub fn external_candidate<'a>(
         twin: twin.map(|(registry, request)| {
             (request.to_string(), registry_seeds(registry, request, base))
         }),
+        max_dims: None,
     }
 }

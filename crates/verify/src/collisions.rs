@@ -194,6 +194,7 @@ fn collision_tests(plan: &CollisionPlan, counts: &[(u64, Option<String>)]) -> Ve
                 power: "detects any two tested nodes whose subtrees coincide up to a translation"
                     .into(),
                 deviates: false,
+                not_run: None,
             }
         })
         .collect()
@@ -249,6 +250,7 @@ mod tests {
             tree: Tree::new(DigitLayout::new(Width::W32, PowerOfTwoBase::B4)),
             claim: Claim::parse(claim).unwrap(),
             plan: *Level::Quick.plan(),
+            max_dims: None,
         }
     }
 

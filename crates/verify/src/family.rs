@@ -22,12 +22,20 @@ pub struct LawConfig {
     pub claim: Claim,
     /// The level's sizes (seeds, depths, columns).
     pub plan: LevelPlan,
+    /// The implementation serves dimensions 0..N only (`--max-dims N`); `None`: every one.
+    pub max_dims: Option<u32>,
 }
 
 impl LawConfig {
     /// The group node permutations are tested against: the claimed one, else S_b.
     pub fn group(&self) -> NodeGroup {
         self.claim.marginal.unwrap_or(NodeGroup::Symmetric)
+    }
+
+    /// Why a sub-test using dimension `dim` cannot run, if the implementation does not serve
+    /// it (see [`needs_dimension`]).
+    pub fn beyond(&self, dim: u32) -> Option<String> {
+        needs_dimension(self.max_dims, dim)
     }
 
     /// Depths 0..=max_depth that have a full digit.
@@ -37,6 +45,19 @@ impl LawConfig {
             .max_depth
             .min(self.tree.full_digits().saturating_sub(1))
     }
+}
+
+/// Why a check using dimension `dim` cannot run when only dimensions 0..`max_dims` are served
+/// (`needs dimension 63, beyond the 4 served`); `None` when it can.
+pub fn needs_dimension(max_dims: Option<u32>, dim: u32) -> Option<String> {
+    max_dims
+        .filter(|&n| dim >= n)
+        .map(|n| format!("needs dimension {dim}, beyond the {n} served"))
+}
+
+/// The number of dimensions `0..want` a check can use when `max_dims` are served.
+pub fn usable_dims(max_dims: Option<u32>, want: u32) -> u32 {
+    max_dims.map_or(want, |n| n.min(want))
 }
 
 /// A family's own evaluation: instances of the candidate for seeds `seed_base + i`.

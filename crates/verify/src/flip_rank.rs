@@ -22,6 +22,11 @@ pub struct RankPlan {
 
 /// Dimensions whose node bits share one rank matrix.
 const RANK_DIMS: [u32; 2] = [0, 1];
+/// Why the rank matrix cannot be built: a dimension of [`RANK_DIMS`] is not served.
+fn unserved(cfg: &LawConfig) -> Option<String> {
+    RANK_DIMS.iter().find_map(|&dim| cfg.beyond(dim))
+}
+
 /// Rows beyond the column count: a full-rank matrix is then missed with probability < 2^-40.
 const RANK_MARGIN: u64 = 40;
 
@@ -200,6 +205,7 @@ fn rank_analyse(cfg: &LawConfig, plan: RankPlan, outputs: &[&[Vec<u64>]]) -> Vec
                     n - cols_so_far.min(n)
                 ),
                 deviates: false,
+                not_run: None,
             }
         })
         .collect()
@@ -222,10 +228,22 @@ impl LawFamily for FlipRank {
     }
 
     fn shared_probes(&self, cfg: &LawConfig) -> Vec<Probe> {
+        if unserved(cfg).is_some() {
+            return Vec::new();
+        }
         rank_probes(cfg, rank_plan(cfg, cfg.plan.rank_columns))
     }
 
     fn analyse_shared(&self, cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
-        rank_analyse(cfg, rank_plan(cfg, cfg.plan.rank_columns), outputs)
+        let plan = rank_plan(cfg, cfg.plan.rank_columns);
+        match unserved(cfg) {
+            None => rank_analyse(cfg, plan, outputs),
+            Some(why) => (0..=plan.depth)
+                .map(|depth| {
+                    let name = format!("π(0) bits of depths ≤ {depth}, dims 0-1: full rank");
+                    SubTest::not_run(name, Some(depth), Requirement::Independent, why.clone())
+                })
+                .collect(),
+        }
     }
 }

@@ -16,101 +16,142 @@ pub fn judge_families(
     judged: usize,
     seconds: f64,
 ) -> Vec<CheckResult> {
-    let claimed_tests: usize = families
-        .iter()
-        .flat_map(|(_, t)| t.iter())
-        .filter(|t| t.requires.claimed_by(claim))
-        .count();
-    let all_tests: usize = families.iter().map(|(_, t)| t.len()).sum();
+    // Sub-tests that did not run count towards no level.
+    let ran = || {
+        families
+            .iter()
+            .flat_map(|(_, t)| t.iter())
+            .filter(|t| t.ran())
+    };
+    let claimed_tests = ran().filter(|t| t.requires.claimed_by(claim)).count();
+    let all_tests = ran().count();
     let alpha = bonferroni(FAMILY_ALPHA, judged.max(1) * claimed_tests.max(1));
     // Measured-only sub-tests are flagged at the level they would have had if claimed.
     let measure_alpha = bonferroni(FAMILY_ALPHA, judged.max(1) * all_tests.max(1));
     families
         .into_iter()
-        .map(|(family, mut tests)| {
-            let mut judged_fail = false;
-            let mut any_claimed = false;
-            for t in &mut tests {
-                let claimed = t.requires.claimed_by(claim);
-                any_claimed |= claimed;
-                let a = if claimed { alpha } else { measure_alpha };
-                t.deviates = t.p_value < a;
-                judged_fail |= claimed && t.deviates;
-                if let Some(dof) = t.dof {
-                    t.power = format!(
-                        "χ² {dof} dof, n = {}: detects Cohen's w ≥ {:.3} at power 0.9",
-                        t.n,
-                        min_detectable_w(dof, t.n, a)
-                    );
-                }
-            }
-            // The worst sub-test among those the verdict rests on (the judged ones when the
-            // claim covers any): a pass is never explained by a sub-test it did not judge.
-            let judged_of = |t: &SubTest| !any_claimed || t.requires.claimed_by(claim);
-            let worst = tests
-                .iter()
-                .filter(|t| judged_of(t))
-                .min_by(|a, b| a.p_value.total_cmp(&b.p_value))
-                .cloned();
-            let count = |judged: bool| {
-                let of: Vec<&SubTest> = tests.iter().filter(|t| judged_of(t) == judged).collect();
-                (of.iter().filter(|t| t.deviates).count(), of.len())
-            };
-            let (deviations, judged_tests) = count(true);
-            let (measured_deviations, measured_tests) = count(false);
-            let verdict = if !any_claimed {
-                Verdict::Measured
-            } else if judged_fail {
-                Verdict::Fail
-            } else {
-                Verdict::Pass
-            };
-            let detail = match &worst {
-                None => "not applicable".to_string(),
-                Some(w) => {
-                    let mut d = format!(
-                        "{}: {} of {} {}sub-tests deviate at α' = {:.1e}; worst: {} (p = {:.2e}; {})",
-                        if verdict == Verdict::Pass {
-                            "no deviation detected at this power"
-                        } else if verdict == Verdict::Fail {
-                            "deviation"
-                        } else {
-                            "not claimed, measured"
-                        },
-                        deviations,
-                        judged_tests,
-                        if any_claimed && measured_tests > 0 { "judged " } else { "" },
-                        if any_claimed { alpha } else { measure_alpha },
-                        w.name,
-                        w.p_value,
-                        w.power
-                    );
-                    if measured_tests > 0 {
-                        d.push_str(&format!(
-                            "; not claimed, measured: {measured_deviations} of {measured_tests} \
-                             deviate at α' = {measure_alpha:.1e}"
-                        ));
-                    }
-                    d
-                }
-            };
-            CheckResult {
-                check: family.into(),
-                verdict: if tests.is_empty() {
-                    Verdict::Skipped
-                } else {
-                    verdict
-                },
-                detail,
-                value: worst.as_ref().map(|w| w.statistic),
-                seconds,
-                words: None,
-                p_value: worst.as_ref().map(|w| w.p_value),
-                alpha: Some(if any_claimed { alpha } else { measure_alpha }),
-                tests,
-            }
-        })
+        .map(|(family, tests)| judge_family(family, tests, claim, (alpha, measure_alpha), seconds))
         .collect()
+}
+
+/// Why the sub-tests that did not run did not, each reason once, in order.
+fn not_run_reasons(tests: &[SubTest]) -> Vec<&str> {
+    let mut reasons: Vec<&str> = Vec::new();
+    for why in tests.iter().filter_map(|t| t.not_run.as_deref()) {
+        if !reasons.contains(&why) {
+            reasons.push(why);
+        }
+    }
+    reasons
+}
+
+/// One family's check from its sub-tests, at the run's per-test levels (claimed, measured).
+fn judge_family(
+    family: &'static str,
+    mut tests: Vec<SubTest>,
+    claim: Claim,
+    (alpha, measure_alpha): (f64, f64),
+    seconds: f64,
+) -> CheckResult {
+    let mut judged_fail = false;
+    let mut any_claimed = false;
+    for t in tests.iter_mut().filter(|t| t.ran()) {
+        let claimed = t.requires.claimed_by(claim);
+        any_claimed |= claimed;
+        let a = if claimed { alpha } else { measure_alpha };
+        t.deviates = t.p_value < a;
+        judged_fail |= claimed && t.deviates;
+        if let Some(dof) = t.dof {
+            t.power = format!(
+                "χ² {dof} dof, n = {}: detects Cohen's w ≥ {:.3} at power 0.9",
+                t.n,
+                min_detectable_w(dof, t.n, a)
+            );
+        }
+    }
+    for t in tests.iter_mut().filter(|t| !t.ran()) {
+        t.deviates = false;
+    }
+    // The worst sub-test among those the verdict rests on (the judged ones when the claim
+    // covers any): a pass is never explained by a sub-test it did not judge.
+    let judged_of = |t: &SubTest| t.ran() && (!any_claimed || t.requires.claimed_by(claim));
+    let worst = tests
+        .iter()
+        .filter(|t| judged_of(t))
+        .min_by(|a, b| a.p_value.total_cmp(&b.p_value))
+        .cloned();
+    let count = |judged: bool| {
+        let of: Vec<&SubTest> = tests
+            .iter()
+            .filter(|t| t.ran() && judged_of(t) == judged)
+            .collect();
+        (of.iter().filter(|t| t.deviates).count(), of.len())
+    };
+    let (deviations, judged_tests) = count(true);
+    let (measured_deviations, measured_tests) = count(false);
+    let reasons = not_run_reasons(&tests);
+    let not_run = tests.len() - tests.iter().filter(|t| t.ran()).count();
+    let verdict = if tests.is_empty() {
+        Verdict::Skipped
+    } else if worst.is_none() {
+        Verdict::NotRun
+    } else if !any_claimed {
+        Verdict::Measured
+    } else if judged_fail {
+        Verdict::Fail
+    } else {
+        Verdict::Pass
+    };
+    let mut detail = match &worst {
+        None if not_run > 0 => format!("not run: {}", reasons.join("; ")),
+        None => "not applicable".to_string(),
+        Some(w) => {
+            let mut d = format!(
+                "{}: {} of {} {}sub-tests deviate at α' = {:.1e}; worst: {} (p = {:.2e}; {})",
+                match verdict {
+                    Verdict::Pass => "no deviation detected at this power",
+                    Verdict::Fail => "deviation",
+                    _ => "not claimed, measured",
+                },
+                deviations,
+                judged_tests,
+                if any_claimed && measured_tests > 0 {
+                    "judged "
+                } else {
+                    ""
+                },
+                if any_claimed { alpha } else { measure_alpha },
+                w.name,
+                w.p_value,
+                w.power
+            );
+            if measured_tests > 0 {
+                d.push_str(&format!(
+                    "; not claimed, measured: {measured_deviations} of {measured_tests} \
+                     deviate at α' = {measure_alpha:.1e}"
+                ));
+            }
+            d
+        }
+    };
+    if worst.is_some() && not_run > 0 {
+        detail.push_str(&format!(
+            "; not run: {not_run} of {} sub-tests ({})",
+            tests.len(),
+            reasons.join("; ")
+        ));
+    }
+    CheckResult {
+        check: family.into(),
+        verdict,
+        detail,
+        value: worst.as_ref().map(|w| w.statistic),
+        seconds,
+        words: None,
+        p_value: worst.as_ref().map(|w| w.p_value),
+        alpha: Some(if any_claimed { alpha } else { measure_alpha }),
+        tests,
+    }
 }
 
 /// The per-depth profile of the law checks: one string per family, a character per depth.
@@ -134,6 +175,8 @@ pub fn profile(checks: &[CheckResult]) -> Vec<(String, String)> {
                         '-'
                     } else if at.iter().any(|t| t.deviates) {
                         'x'
+                    } else if at.iter().any(|t| !t.ran()) {
+                        '?'
                     } else {
                         '.'
                     }
@@ -161,6 +204,7 @@ mod tests {
             dof: None,
             power: "exact".into(),
             deviates: false,
+            not_run: None,
         }
     }
 
@@ -206,6 +250,40 @@ mod tests {
             "{}",
             c.detail
         );
+    }
+
+    #[test]
+    fn sub_tests_that_did_not_run_count_towards_no_level_and_show_as_unmeasured() {
+        let why = "needs dimension 7, beyond the 4 served";
+        let gone = |name: &str| {
+            let mut t = SubTest::not_run(name.into(), Some(1), Requirement::Marginal, why);
+            // Even a stray p-value of 0 on a sub-test that did not run is no deviation.
+            t.p_value = 0.0;
+            t
+        };
+        let families = vec![
+            ("ran", vec![sub("a", Requirement::Marginal, 0.5), gone("b")]),
+            ("none", vec![gone("c"), gone("d")]),
+        ];
+        let claim = Claim::marginal(NodeGroup::Symmetric);
+        let checks = judge_families(families, claim, 1, 0.0);
+        // One sub-test ran: α' = 1e-3 / 1.
+        assert_eq!(checks[0].alpha, Some(FAMILY_ALPHA));
+        assert_eq!(checks[0].verdict, Verdict::Pass);
+        assert!(
+            checks[0]
+                .detail
+                .ends_with(&format!("; not run: 1 of 2 sub-tests ({why})")),
+            "{}",
+            checks[0].detail
+        );
+        assert!(!checks[0].tests[1].deviates);
+        assert_eq!(checks[1].verdict, Verdict::NotRun);
+        assert_eq!(checks[1].detail, format!("not run: {why}"));
+        assert_eq!((checks[1].p_value, checks[1].value), (None, None));
+        let rows = profile(&checks);
+        assert_eq!(rows[0], ("ran".to_string(), ".?".to_string()));
+        assert_eq!(rows[1], ("none".to_string(), "-?".to_string()));
     }
 
     #[test]

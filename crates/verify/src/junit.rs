@@ -33,8 +33,8 @@ pub struct JunitSuite {
     pub certificate: Option<String>,
 }
 
-/// A case per check (measured checks pass, with their value in `<system-out>`; skipped ones
-/// are skipped; a failure carries the measured value, p-value and level).
+/// A case per check (measured checks pass, with their value in `<system-out>`; skipped and
+/// not-run ones are skipped; a failure carries the measured value, p-value and level).
 pub fn check_cases(checks: &[CheckResult]) -> Vec<JunitCase> {
     checks
         .iter()
@@ -51,7 +51,7 @@ pub fn check_cases(checks: &[CheckResult]) -> Vec<JunitCase> {
                     ),
                 )
             }),
-            skipped: c.verdict == Verdict::Skipped,
+            skipped: matches!(c.verdict, Verdict::Skipped | Verdict::NotRun),
             output: format!("{:?}: {}", c.verdict, c.detail),
             seconds: c.seconds,
         })

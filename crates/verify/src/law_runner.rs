@@ -38,6 +38,7 @@ pub fn config(c: &Candidate, level: Level) -> LawConfig {
         tree: Tree::new(DigitLayout::new(working_width(probe), probe.base())),
         claim: c.claim,
         plan: *level.plan(),
+        max_dims: c.max_dims,
     }
 }
 

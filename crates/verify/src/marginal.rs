@@ -127,6 +127,7 @@ fn analyse(cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
             dof: None,
             power: "exact: one permutation outside the group fails".into(),
             deviates: false,
+            not_run: None,
         });
         let law = if full_perm {
             crate::expected::uniform(cells)
@@ -169,6 +170,7 @@ fn analyse(cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
                 dof: None,
                 power: "one-sided binomial: detects affine families (fraction 1)".into(),
                 deviates: false,
+                not_run: None,
             });
         }
     }

@@ -21,6 +21,18 @@ use gartowen_core::{PowerOfTwoBase, Scrambler, Width};
 use gartowen_netcheck::{counting::t_value, rank, CheckBase, PointSet};
 use gartowen_seq::SequenceKind;
 
+/// The dimensions a net check uses when only dimensions 0..`max_dims` are served: its own
+/// (`dims`) where they are served, else the first `dims.len()` served dimensions (any
+/// projection of these sequences is a net with a t-value the rank path computes).
+pub fn served_dims(dims: Vec<usize>, max_dims: Option<u32>) -> Vec<usize> {
+    match max_dims {
+        Some(n) if dims.iter().any(|&d| d >= n as usize) => {
+            (0..dims.len().min(n as usize)).collect()
+        }
+        _ => dims,
+    }
+}
+
 /// The sequence and dimensions the check uses in base `base`.
 pub fn net_sequence(base: PowerOfTwoBase) -> (SequenceKind, Vec<usize>) {
     match base.base() {
@@ -92,14 +104,17 @@ impl std::fmt::Display for NetBroken {
     }
 }
 
-/// One base's net check: every m keeps its t-value, or the first m that does not.
+/// One base's net check: every m keeps its t-value, or the first m that does not. Uses
+/// dimensions 0..`max_dims` only (see [`served_dims`]).
 pub fn check_base(
     s: &dyn Scrambler,
     width: Width,
     base: PowerOfTwoBase,
     level: Level,
+    max_dims: Option<u32>,
 ) -> Result<NetsKept, NetBroken> {
     let (kind, dims) = net_sequence(base);
+    let dims = served_dims(dims, max_dims);
     let seq = kind
         .build(dims.iter().max().expect("dims") + 1, width)
         .expect("built-in sequence");
@@ -136,11 +151,16 @@ pub fn check_base(
     })
 }
 
-/// The `nets` check: every base the scrambler is nested in.
-pub fn check_nets(s: &dyn Scrambler, width: Width, level: Level) -> (Verdict, String) {
+/// The `nets` check: every base the scrambler is nested in, in dimensions 0..`max_dims`.
+pub fn check_nets(
+    s: &dyn Scrambler,
+    width: Width,
+    level: Level,
+    max_dims: Option<u32>,
+) -> (Verdict, String) {
     let mut kept = Vec::new();
     for base in nested_bases(s.base()) {
-        match check_base(s, width, base, level) {
+        match check_base(s, width, base, level, max_dims) {
             Ok(summary) => kept.push(summary.to_string()),
             Err(broken) => return (Verdict::Fail, broken.to_string()),
         }
@@ -157,6 +177,20 @@ mod tests {
             .iter()
             .map(|b| b.base())
             .collect()
+    }
+
+    #[test]
+    fn nets_keep_their_own_dimensions_where_served_and_take_the_first_ones_otherwise() {
+        assert_eq!(served_dims(vec![0, 1, 255], None), [0, 1, 255]);
+        assert_eq!(served_dims(vec![0, 1, 255], Some(256)), [0, 1, 255]);
+        assert_eq!(served_dims(vec![0, 1, 255], Some(255)), [0, 1, 2]);
+        assert_eq!(served_dims(vec![0, 5, 10, 15], Some(4)), [0, 1, 2, 3]);
+        assert_eq!(served_dims(vec![0, 1, 2], Some(2)), [0, 1]);
+        assert_eq!(served_dims(vec![0, 1, 2], Some(1)), [0]);
+        // A sequence cut to served dimensions still checks every m of its base.
+        let s = gartowen_core::Identity;
+        let kept = check_base(&s, Width::W32, PowerOfTwoBase::B16, Level::Quick, Some(2));
+        assert_eq!(kept.unwrap().dims, [0, 1]);
     }
 
     #[test]

@@ -17,6 +17,7 @@
 //! Sizes come from the [`LevelPlan`].
 
 use crate::candidate::Candidate;
+use crate::family::usable_dims;
 use crate::level::LevelPlan;
 use crate::sampling::SeedBuilder;
 use crate::verdict::Outcome;
@@ -54,14 +55,14 @@ pub const STRUCTURE_CHECKS: [StructureCheck; 6] = [
         what: "unscramble(scramble(x)) = x on seeded words of every supported width",
         stage: Stage::BeforeLaws,
         applies: |c| c.probe.inverse().is_some(),
-        run: |c, plan| check_inverse(c.probe.as_ref(), plan),
+        run: |c, plan| check_inverse(c.probe.as_ref(), plan, c.max_dims),
     },
     StructureCheck {
         name: "injective",
         what: "no inverse to test: images in range, no two inputs of a dimension collide",
         stage: Stage::BeforeLaws,
         applies: |c| c.probe.inverse().is_none(),
-        run: |c, plan| check_injective(c.probe.as_ref(), plan),
+        run: |c, plan| check_injective(c.probe.as_ref(), plan, c.max_dims),
     },
     StructureCheck {
         name: "function",
@@ -82,7 +83,7 @@ pub const STRUCTURE_CHECKS: [StructureCheck; 6] = [
         what: "nets in the scrambler's base and every base it is nested in keep their t-values",
         stage: Stage::BeforeLaws,
         applies: |_| true,
-        run: |c, plan| check_nets(c.probe.as_ref(), plan),
+        run: |c, plan| check_nets(c.probe.as_ref(), plan, c.max_dims),
     },
     StructureCheck {
         name: "expect",
@@ -102,6 +103,8 @@ pub const INVERSE_SEED: u64 = 0x1234;
 pub const PROBE_SEED: u64 = 1;
 /// Seed of the words `expect` compares.
 pub const TWIN_SEED: u64 = 0xE8EC7;
+/// Dimensions `expect` compares (fewer when fewer are served).
+const TWIN_DIMS: u32 = 8;
 
 /// Nodes the inspector probes when 16-bit words are unsupported.
 const NESTED_PROBES: u64 = 2000;
@@ -122,7 +125,7 @@ pub fn working_width(s: &dyn Scrambler) -> Width {
     }
 }
 
-fn check_inverse(s: &dyn Scrambler, plan: &LevelPlan) -> Outcome {
+fn check_inverse(s: &dyn Scrambler, plan: &LevelPlan, max_dims: Option<u32>) -> Outcome {
     let Some(inverse) = s.inverse() else {
         return Outcome::fail("the implementation offers no inverse (Scrambler::inverse is None)");
     };
@@ -131,7 +134,7 @@ fn check_inverse(s: &dyn Scrambler, plan: &LevelPlan) -> Outcome {
     for width in supported_widths(s) {
         for _ in 0..n {
             let x = rng.next_u64() & width.mask();
-            let dim = rng.bounded(8);
+            let dim = rng.bounded(usable_dims(max_dims, 8));
             let y = s.scramble(x, width, dim);
             if width.check(y).is_err() || inverse.unscramble(y, width, dim) != x {
                 return Outcome::fail(format!(
@@ -144,11 +147,11 @@ fn check_inverse(s: &dyn Scrambler, plan: &LevelPlan) -> Outcome {
     Outcome::pass(format!("{n} words per supported width invert"))
 }
 
-fn check_injective(s: &dyn Scrambler, plan: &LevelPlan) -> Outcome {
+fn check_injective(s: &dyn Scrambler, plan: &LevelPlan, max_dims: Option<u32>) -> Outcome {
     let n = plan.injective_words;
     let mut rng = SplitMix64::new(INVERSE_SEED);
     for width in supported_widths(s) {
-        for dim in 0..4u32 {
+        for dim in 0..usable_dims(max_dims, 4) {
             let mut inputs: Vec<u64> = (0..n).map(|_| rng.next_u64() & width.mask()).collect();
             inputs.sort_unstable();
             inputs.dedup();
@@ -197,7 +200,8 @@ fn check_function(c: &Candidate, _plan: &LevelPlan) -> Outcome {
         (Ok(a), Ok(b)) => (a, b),
         (Err(e), _) | (_, Err(e)) => return Outcome::fail(format!("cannot build seed 1: {e}")),
     };
-    for dim in 0..FUNCTION_DIMS {
+    let dims = usable_dims(c.max_dims, FUNCTION_DIMS);
+    for dim in 0..dims {
         let xs: Vec<u64> = (0..FUNCTION_WORDS)
             .map(|k| match k {
                 0 => 0,
@@ -233,7 +237,7 @@ fn check_function(c: &Candidate, _plan: &LevelPlan) -> Outcome {
         }
     }
     Outcome::pass(format!(
-        "{FUNCTION_WORDS} {}-bit words in dims 0..{FUNCTION_DIMS}: equal outputs in a second request, \
+        "{FUNCTION_WORDS} {}-bit words in dims 0..{dims}: equal outputs in a second request, \
          in reverse order, alone, and from a second instance",
         width.bits()
     ))
@@ -268,12 +272,12 @@ fn check_nested(s: &dyn Scrambler) -> Outcome {
     }
 }
 
-fn check_nets(s: &dyn Scrambler, plan: &LevelPlan) -> Outcome {
+fn check_nets(s: &dyn Scrambler, plan: &LevelPlan, max_dims: Option<u32>) -> Outcome {
     let width = working_width(s);
     if !s.supports_width(width) {
         return Outcome::skipped("neither 32- nor 64-bit words");
     }
-    let (verdict, detail) = crate::nets::check_nets(s, width, plan.level);
+    let (verdict, detail) = crate::nets::check_nets(s, width, plan.level, max_dims);
     Outcome {
         verdict,
         detail,
@@ -301,7 +305,7 @@ fn check_twin(c: &Candidate, twin_name: &str, twin: &SeedBuilder, plan: &LevelPl
                 width.bits()
             ));
         }
-        for dim in 0..8u32 {
+        for dim in 0..usable_dims(c.max_dims, TWIN_DIMS) {
             let xs: Vec<u64> = (0..words)
                 .map(|k| match k {
                     0 => 0,
@@ -323,8 +327,9 @@ fn check_twin(c: &Candidate, twin_name: &str, twin: &SeedBuilder, plan: &LevelPl
         }
     }
     Outcome::pass(format!(
-        "bit-exact with {twin_name} on {compared} {}-bit words (seeds 0..4, dims 0..8)",
-        width.bits()
+        "bit-exact with {twin_name} on {compared} {}-bit words (seeds 0..4, dims 0..{})",
+        width.bits(),
+        usable_dims(c.max_dims, TWIN_DIMS)
     ))
 }
 

@@ -55,6 +55,10 @@ pub struct SubTest {
     /// Whether p fell below the per-test level (filled in by the battery).
     #[serde(default)]
     pub deviates: bool,
+    /// Why nothing was measured, when nothing was (`needs dimension 63`, `external program
+    /// failed: …`): such a sub-test counts towards no level and no verdict.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub not_run: Option<String>,
 }
 
 impl SubTest {
@@ -75,6 +79,33 @@ impl SubTest {
             dof: Some(c.dof),
             power: String::new(),
             deviates: false,
+            not_run: None,
         }
+    }
+
+    /// A sub-test that could not run, with why (its statistic and p-value are NaN).
+    pub fn not_run(
+        name: String,
+        depth: Option<u32>,
+        requires: Requirement,
+        why: impl Into<String>,
+    ) -> SubTest {
+        SubTest {
+            name,
+            depth,
+            requires,
+            statistic: f64::NAN,
+            p_value: f64::NAN,
+            n: 0,
+            dof: None,
+            power: String::new(),
+            deviates: false,
+            not_run: Some(why.into()),
+        }
+    }
+
+    /// Whether it measured something.
+    pub fn ran(&self) -> bool {
+        self.not_run.is_none()
     }
 }

@@ -17,6 +17,23 @@ pub enum Verdict {
     Measured,
     /// Not applicable (e.g. no sequence in this base).
     Skipped,
+    /// Could not run: it needs more than the implementation serves (a dimension beyond
+    /// `--max-dims`). The detail says what it needed.
+    #[serde(rename = "not-run")]
+    NotRun,
+}
+
+impl Verdict {
+    /// The word reports print for it (`pass`, `FAIL`, `measured`, `skipped`, `not run`).
+    pub fn label(self) -> &'static str {
+        match self {
+            Verdict::Pass => "pass",
+            Verdict::Fail => "FAIL",
+            Verdict::Measured => "measured",
+            Verdict::Skipped => "skipped",
+            Verdict::NotRun => "not run",
+        }
+    }
 }
 
 /// One check of one implementation.
@@ -64,7 +81,8 @@ pub struct ImplReport {
     /// The checks.
     pub checks: Vec<CheckResult>,
     /// Per law family, one character per depth 0, 1, …: `.` no deviation detected, `x` a
-    /// deviation at the per-test level, `-` not tested (the "how close to Owen" profile).
+    /// deviation at the per-test level, `?` not measured (the program failed, or a sub-test
+    /// needed more dimensions than served), `-` not tested (the "how close to Owen" profile).
     #[serde(default)]
     pub profile: Vec<(String, String)>,
 }
@@ -112,6 +130,15 @@ impl Outcome {
         Outcome {
             verdict: Verdict::Skipped,
             detail: reason.into(),
+            value: None,
+        }
+    }
+
+    /// A check that could not run, with what it needed (`needs dimension 7`).
+    pub fn not_run(needed: impl Into<String>) -> Outcome {
+        Outcome {
+            verdict: Verdict::NotRun,
+            detail: format!("not run: {}", needed.into()),
             value: None,
         }
     }

@@ -198,6 +198,7 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
             health: Box::new(|| None),
             twin: None,
             claim: s.claim(),
+            max_dims: None,
         };
         let outcome = (check.run)(&c, Level::Quick.plan());
         if let Some(e) = process.as_ref().and_then(|p| p.failure()) {
@@ -248,6 +249,7 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
             health: Box::new(|| None),
             twin: None,
             claim,
+            max_dims: None,
         };
         let families = run_laws(&c, Level::Quick, 0).map_err(|e| CliError::Usage(e.to_string()))?;
         if let Some(e) = external_failure() {

@@ -202,14 +202,22 @@ fn run_external(
         super::parse_claim(&a.claim)?.unwrap_or(Claim::OWEN)
     };
     let process = Arc::new(process);
-    let candidate = external_candidate(
+    let mut candidate = external_candidate(
         process.clone(),
         a.seed,
         claim,
         a.expect.as_deref().map(|n| (&registry, n)),
     );
+    candidate.max_dims = a.max_dims;
     let mut report = check_candidate(&candidate, level, 1);
     if a.equivalent_to.is_some() {
+        // The estimators read dimensions 0 and 1.
+        if let Some(why) = gartowen::battery::family::needs_dimension(a.max_dims, 1) {
+            report
+                .checks
+                .push(not_run_check("equivalent-to-owen", &why));
+            return Ok((report, process.failure().map(|e| e.to_string())));
+        }
         let mut check = gartowen::battery::owen_equivalence::check_equivalent_to_owen(
             candidate.with_seed.as_ref(),
             base,
@@ -225,6 +233,22 @@ fn run_external(
         report.checks.push(check);
     }
     Ok((report, process.failure().map(|e| e.to_string())))
+}
+
+/// A check that could not run, saying what it needed.
+fn not_run_check(name: &str, why: &str) -> gartowen::verify::CheckResult {
+    let outcome = gartowen::battery::verdict::Outcome::not_run(why);
+    gartowen::verify::CheckResult {
+        check: name.into(),
+        verdict: outcome.verdict,
+        detail: outcome.detail,
+        value: None,
+        seconds: 0.0,
+        words: None,
+        p_value: None,
+        alpha: None,
+        tests: Vec::new(),
+    }
 }
 
 /// Whether `path` is a certificate of the every-word sweep (its merge is the sweep's).
@@ -344,7 +368,7 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
         if let Some(command) = &a.external {
             parameters["external"] = serde_json::json!({
                 "command": command, "base": a.base, "width": a.width, "seed": a.seed,
-                "expect": a.expect, "timeout_seconds": a.timeout,
+                "expect": a.expect, "timeout_seconds": a.timeout, "max_dims": a.max_dims,
                 "claim": reports[0].claim,
             });
         }
@@ -413,17 +437,17 @@ fn print_table(reports: &[ImplReport]) -> Result<(), CliError> {
         };
         let mut row = format!("{name:<name_column$} {:<claim_column$}", r.claim);
         for c in &r.checks {
-            let v = match c.verdict {
-                Verdict::Pass => "pass",
-                Verdict::Fail => "FAIL",
-                Verdict::Measured => "measured",
-                Verdict::Skipped => "skipped",
-            };
-            row.push_str(&format!(" {v:<11}"));
+            row.push_str(&format!(" {:<11}", c.verdict.label()));
         }
         crate::outln!("{}", row.trim_end());
         for c in r.checks.iter().filter(|c| c.verdict == Verdict::Fail) {
             crate::outln!("    FAIL {}: {}", c.check, c.detail);
+        }
+        // What could not run (dimensions beyond --max-dims), also inside a passing check.
+        for c in r.checks.iter().filter(|c| c.verdict != Verdict::Fail) {
+            if let Some(at) = c.detail.find("not run: ") {
+                crate::outln!("    {}: {}", c.check, &c.detail[at..]);
+            }
         }
         // An equivalence verdict is worth reading when it passes too: it states the intervals.
         for c in r
@@ -444,7 +468,7 @@ fn print_table(reports: &[ImplReport]) -> Result<(), CliError> {
     }
     crate::outln!(
         "law checks: family-wise α = {} (Bonferroni); pass = no deviation detected at the stated power; \
-         profile: . none detected, x deviation, - not tested",
+         profile: . none detected, x deviation, ? not measured, - not tested",
         gartowen::verify::stats::FAMILY_ALPHA
     );
     Ok(())

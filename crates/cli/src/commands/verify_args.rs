@@ -33,7 +33,8 @@ pub enum LevelArg {
 /// (Bonferroni over implementations and sub-tests); a pass reads "no deviation detected at this
 /// power", and each sub-test's power (smallest Cohen's w at power 0.9, or what an exact test
 /// detects) is in the JSON. The profile line shows, per family and depth 0, 1, 2, …, where an
-/// implementation departs from Owen: `.` nothing detected, `x` deviation, `-` not tested.
+/// implementation departs from Owen: `.` nothing detected, `x` deviation, `?` not measured
+/// (the program failed, or a sub-test needs a dimension beyond --max-dims), `-` not tested.
 ///
 /// Prints a table (implementation × check). Exit codes: 0 every check passed, 1 a check
 /// failed, 2 bad usage or input, 3 the external program failed (crash, exit, hang, garbage).
@@ -62,6 +63,7 @@ pub enum LevelArg {
 /// External implementations (the protocol is in docs/external.md):
 ///   gartowen verify --external './my_scrambler --fast' --base 16 --width 32
 ///   gartowen verify --external ./owen_per_bit --base 2 --width 64 --expect owen-per-bit-hash
+///   gartowen verify --external ./four_dims --base 2 --max-dims 4   (serves dimensions 0..3)
 ///
 /// Equivalence to Owen (the estimator variance against the exact Owen variance of the base,
 /// TOST with a stated margin; the seeds used are printed and in the JSON):
@@ -102,6 +104,14 @@ pub struct VerifyArgs {
     /// Word width the external program receives: 32 or 64.
     #[arg(long, default_value_t = 32, requires = "external")]
     pub width: u32,
+    /// The external program serves dimensions 0..N only (a sampler with N dimensions per
+    /// domain): no check asks for another. Checks choose their dimensions among those served
+    /// (`nets` takes the first ones, `dimensions` compares 0..N); a sub-test that needs a
+    /// dimension beyond them (root pairs up to (0,63); flip-rank needs 2) reports
+    /// "not run: needs dimension D" and `?` in the profile, and counts towards no verdict.
+    #[arg(long, value_name = "N", requires = "external",
+          value_parser = clap::value_parser!(u32).range(1..))]
+    pub max_dims: Option<u32>,
     /// Seed of the external program's main instance (the node law uses seeds 0, 1, 2, …).
     #[arg(long, default_value_t = 0, requires = "external")]
     pub seed: u64,
