@@ -325,11 +325,24 @@ fn a_failing_program_fails_every_check_with_the_reason() {
     let p = spawn("sh -c 'exec sleep 30'", Width::W32, 200);
     let c = external_candidate(Arc::new(p), 0, Claim::OWEN, None);
     let r = check_candidate(&c, Level::Quick, 1);
-    // Nothing was measured: no sub-test and no profile row claims a deviation.
-    assert!(r.profile.is_empty(), "{:?}", r.profile);
+    // Nothing was measured: every sub-test is not run, and the profile shows `?` where it
+    // would have tested, never a deviation or a pass.
+    assert!(!r.profile.is_empty());
+    for (family, row) in &r.profile {
+        assert!(
+            row.contains('?') && !row.contains(['x', '.']),
+            "{family} {row}"
+        );
+    }
     for check in &r.checks {
         assert!(
-            check.tests.is_empty() && check.p_value.is_none(),
+            check.p_value.is_none()
+                && check
+                    .tests
+                    .iter()
+                    .all(|t| t.not_run.as_deref() == Some("external program failed")
+                        && t.p_value.is_nan()
+                        && !t.deviates),
             "{}",
             check.check
         );

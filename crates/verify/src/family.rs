@@ -121,3 +121,21 @@ pub trait LawFamily {
         Ok(Vec::new())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_dimension_is_served_below_the_count_and_checks_use_at_most_it() {
+        assert_eq!(needs_dimension(None, 1000), None);
+        assert_eq!(needs_dimension(Some(4), 3), None);
+        assert_eq!(
+            needs_dimension(Some(4), 4).as_deref(),
+            Some("needs dimension 4, beyond the 4 served")
+        );
+        assert_eq!(usable_dims(None, 64), 64);
+        assert_eq!(usable_dims(Some(4), 64), 4);
+        assert_eq!(usable_dims(Some(100), 64), 64);
+    }
+}

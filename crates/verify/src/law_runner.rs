@@ -194,6 +194,65 @@ mod tests {
         }
     }
 
+    /// A per-seed XOR (nested) that refuses, by panicking, any dimension from 4 on.
+    struct FourDims(u64);
+
+    impl Scrambler for FourDims {
+        fn name(&self) -> String {
+            "four-dims".into()
+        }
+        fn base(&self) -> PowerOfTwoBase {
+            PowerOfTwoBase::B2
+        }
+        fn claim(&self) -> Claim {
+            Claim::OWEN
+        }
+        fn scramble(&self, x: u64, width: Width, dim: u32) -> u64 {
+            assert!(dim < 4, "asked for dimension {dim}");
+            let key = gartowen_core::hash_words(&[self.0, u64::from(dim)]);
+            (x ^ key) & width.mask()
+        }
+    }
+
+    #[test]
+    fn served_dimensions_bound_every_request_and_the_rest_is_not_run() {
+        let mut c = Candidate::from_builder(
+            "four-dims",
+            Claim::OWEN,
+            Box::new(|seed| Ok(Box::new(FourDims(seed)))),
+        )
+        .unwrap();
+        c.max_dims = Some(4);
+        let runs = run_laws(&c, Level::Quick, 0).unwrap();
+        let not_run: Vec<(&str, &str)> = runs
+            .iter()
+            .flat_map(|(family, tests)| tests.iter().map(move |t| (*family, t)))
+            .filter_map(|(family, t)| t.not_run.as_deref().map(|why| (family, why)))
+            .collect();
+        assert_eq!(
+            not_run,
+            [
+                ("dimensions", "needs dimension 7, beyond the 4 served"),
+                ("dimensions", "needs dimension 8, beyond the 4 served"),
+                ("dimensions", "needs dimension 63, beyond the 4 served"),
+            ]
+        );
+        let distinct = &runs.iter().find(|(f, _)| *f == "dimensions").unwrap().1[0];
+        assert!(distinct
+            .name
+            .starts_with("dimensions 0..4 pairwise distinct"));
+        // One dimension: flip-rank and distinctness need a second one; the rest runs.
+        c.max_dims = Some(1);
+        for (family, tests) in run_laws(&c, Level::Quick, 0).unwrap() {
+            let skipped = tests.iter().filter(|t| !t.ran()).count();
+            match family {
+                "flip-rank" => assert!(skipped == tests.len() && skipped > 0),
+                "dimensions" => assert_eq!(skipped, tests.len()),
+                _ => assert_eq!(skipped, 0, "{family}"),
+            }
+        }
+    }
+
     #[test]
     fn families_have_distinct_names_and_state_what_they_require() {
         let mut names: Vec<&str> = FAMILIES.iter().map(|f| f.name()).collect();
