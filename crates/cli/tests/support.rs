@@ -9,3 +9,30 @@ pub fn gartowen(args: &[&str]) -> Output {
         .output()
         .expect("the gartowen binary runs")
 }
+
+/// `examples/external/NAME.c` compiled with `cc -O2 FLAGS…` into `dir`; the binary's path. Its
+/// name carries the flags, so one folder holds several builds of one example.
+pub fn build_c_example(dir: &std::path::Path, name: &str, flags: &[&str]) -> String {
+    let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../examples/external")
+        .join(format!("{name}.c"));
+    let suffix: String = flags
+        .iter()
+        .flat_map(|f| f.chars().filter(char::is_ascii_alphanumeric))
+        .collect();
+    let out = dir.join(if suffix.is_empty() {
+        name.to_string()
+    } else {
+        format!("{name}_{suffix}")
+    });
+    let status = std::process::Command::new("cc")
+        .arg("-O2")
+        .args(flags)
+        .arg("-o")
+        .arg(&out)
+        .arg(src)
+        .status()
+        .expect("cc");
+    assert!(status.success());
+    out.to_str().unwrap().to_string()
+}

@@ -257,18 +257,7 @@ fn shard_local_script_merges_four_shards_into_the_unsharded_certificate() {
 }
 
 fn build_example(dir: &std::path::Path, name: &str) -> String {
-    let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../examples/external")
-        .join(format!("{name}.c"));
-    let out = dir.join(name);
-    let status = std::process::Command::new("cc")
-        .args(["-O2", "-o"])
-        .arg(&out)
-        .arg(src)
-        .status()
-        .expect("cc");
-    assert!(status.success());
-    out.to_str().unwrap().to_string()
+    crate::support::build_c_example(dir, name, &[])
 }
 
 #[test]

@@ -7,18 +7,7 @@ use serde_json::Value;
 
 /// `examples/external/NAME.c` built with `-DSERVED_DIMS=dims` into `dir`.
 fn build_serving(dir: &std::path::Path, name: &str, dims: u32) -> String {
-    let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../examples/external")
-        .join(format!("{name}.c"));
-    let out = dir.join(format!("{name}_{dims}"));
-    let status = std::process::Command::new("cc")
-        .args(["-O2", &format!("-DSERVED_DIMS={dims}"), "-o"])
-        .arg(&out)
-        .arg(src)
-        .status()
-        .expect("cc");
-    assert!(status.success());
-    out.to_str().unwrap().to_string()
+    crate::support::build_c_example(dir, name, &[&format!("-DSERVED_DIMS={dims}")])
 }
 
 /// Runs `verify --external PROGRAM --base 2 EXTRA… --json` and returns (exit code, stdout,

@@ -264,10 +264,20 @@ mod tests {
         let families = vec![
             ("ran", vec![sub("a", Requirement::Marginal, 0.5), gone("b")]),
             ("none", vec![gone("c"), gone("d")]),
+            ("all", vec![sub("e", Requirement::Independent, 0.5)]),
+            ("empty", vec![]),
         ];
         let claim = Claim::marginal(NodeGroup::Symmetric);
         let checks = judge_families(families, claim, 1, 0.0);
-        // One sub-test ran: α' = 1e-3 / 1.
+        // A family that ran in full, or had nothing to run, says nothing of "not run".
+        assert!(
+            !checks[2].detail.contains("not run"),
+            "{}",
+            checks[2].detail
+        );
+        assert_eq!(checks[3].verdict, Verdict::Skipped);
+        assert_eq!(checks[3].detail, "not applicable");
+        // One claimed sub-test ran: α' = 1e-3 / 1.
         assert_eq!(checks[0].alpha, Some(FAMILY_ALPHA));
         assert_eq!(checks[0].verdict, Verdict::Pass);
         assert!(
