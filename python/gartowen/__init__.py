@@ -459,7 +459,7 @@ class VerifyResult:
         return [c for c in self.report["checks"] if c["verdict"] == "fail"]
 
     def verdicts(self) -> Dict[str, str]:
-        """Check name -> verdict (``pass``, ``fail``, ``measured``, ``skipped``)."""
+        """Check name -> verdict (``pass``, ``fail``, ``measured``, ``skipped``, ``not-run``)."""
         return {c["check"]: c["verdict"] for c in self.report["checks"]}
 
     def __str__(self) -> str:
