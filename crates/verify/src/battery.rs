@@ -115,17 +115,7 @@ pub fn seeds_used(main_seed: u64) -> Vec<u64> {
 fn run_structure(c: &Candidate, check: &StructureCheck, plan: &LevelPlan) -> CheckResult {
     let t = Instant::now();
     let outcome = (check.run)(c, plan);
-    CheckResult {
-        check: check.name.into(),
-        verdict: outcome.verdict,
-        detail: outcome.detail,
-        value: outcome.value,
-        seconds: t.elapsed().as_secs_f64(),
-        words: None,
-        p_value: None,
-        alpha: None,
-        tests: Vec::new(),
-    }
+    CheckResult::from_outcome(check.name, outcome, t.elapsed().as_secs_f64())
 }
 
 /// Runs every check on one candidate: the structure checks of [`STRUCTURE_CHECKS`] that apply

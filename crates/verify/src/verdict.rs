@@ -87,6 +87,24 @@ pub struct ImplReport {
     pub profile: Vec<(String, String)>,
 }
 
+impl CheckResult {
+    /// The result of check `name` from a structure-style outcome that took `seconds` (no
+    /// sub-tests, levels or words).
+    pub fn from_outcome(name: &str, outcome: Outcome, seconds: f64) -> CheckResult {
+        CheckResult {
+            check: name.into(),
+            verdict: outcome.verdict,
+            detail: outcome.detail,
+            value: outcome.value,
+            seconds,
+            words: None,
+            p_value: None,
+            alpha: None,
+            tests: Vec::new(),
+        }
+    }
+}
+
 impl ImplReport {
     /// Whether any check failed.
     pub fn failed(&self) -> bool {

@@ -5,7 +5,8 @@ use crate::CliError;
 use gartowen::certificate::{CertVerdict, Certificate, InputRecord};
 use gartowen::core::{Claim, PowerOfTwoBase, Width};
 use gartowen::verify::{
-    check_candidate, external_candidate, merge, verify_shard, ImplReport, Level, Shard, Verdict,
+    check_candidate, external_candidate, merge, verify_shard, CheckResult, ImplReport, Level,
+    Shard, Verdict,
 };
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -213,9 +214,9 @@ fn run_external(
     if a.equivalent_to.is_some() {
         // The estimators read dimensions 0 and 1.
         if let Some(why) = gartowen::battery::family::needs_dimension(a.max_dims, 1) {
-            report
-                .checks
-                .push(not_run_check("equivalent-to-owen", &why));
+            let not_run = gartowen::battery::verdict::Outcome::not_run(why);
+            let check = CheckResult::from_outcome("equivalent-to-owen", not_run, 0.0);
+            report.checks.push(check);
             return Ok((report, process.failure().map(|e| e.to_string())));
         }
         let mut check = gartowen::battery::owen_equivalence::check_equivalent_to_owen(
@@ -233,22 +234,6 @@ fn run_external(
         report.checks.push(check);
     }
     Ok((report, process.failure().map(|e| e.to_string())))
-}
-
-/// A check that could not run, saying what it needed.
-fn not_run_check(name: &str, why: &str) -> gartowen::verify::CheckResult {
-    let outcome = gartowen::battery::verdict::Outcome::not_run(why);
-    gartowen::verify::CheckResult {
-        check: name.into(),
-        verdict: outcome.verdict,
-        detail: outcome.detail,
-        value: None,
-        seconds: 0.0,
-        words: None,
-        p_value: None,
-        alpha: None,
-        tests: Vec::new(),
-    }
 }
 
 /// Whether `path` is a certificate of the every-word sweep (its merge is the sweep's).
