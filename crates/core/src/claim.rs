@@ -79,6 +79,39 @@ impl NodeGroup {
         }
     }
 
+    /// Whether the group is defined in every base b ≥ 2 (S_b and the cyclic shifts Z_b);
+    /// the affine group and the XOR translations need b = 2^q.
+    pub fn in_every_base(self) -> bool {
+        matches!(self, NodeGroup::Symmetric | NodeGroup::Cyclic)
+    }
+
+    /// The group's symbol in base `b`: [`NodeGroup::symbol`] for b = 2^q, `S_b` or `Z_b shifts`
+    /// otherwise (the groups of [`NodeGroup::in_every_base`]; others are named by their
+    /// power-of-two form).
+    ///
+    /// ```
+    /// use gartowen_core::NodeGroup;
+    /// assert_eq!(NodeGroup::Symmetric.symbol_in_base(3), "S_3");
+    /// assert_eq!(NodeGroup::Affine.symbol_in_base(8), "AGL(3,2)");
+    /// ```
+    pub fn symbol_in_base(self, b: u32) -> String {
+        match self {
+            _ if b.is_power_of_two() => self.symbol(b.trailing_zeros()),
+            NodeGroup::Cyclic => format!("Z_{b} shifts"),
+            _ => format!("S_{b}"),
+        }
+    }
+
+    /// log2 of the group's order in base `b` ([`NodeGroup::log2_order`] for b = 2^q; log2(b!)
+    /// and log2(b) for S_b and Z_b in other bases).
+    pub fn log2_order_in_base(self, b: u32) -> f64 {
+        match self {
+            _ if b.is_power_of_two() => self.log2_order(b.trailing_zeros()),
+            NodeGroup::Cyclic => (b as f64).log2(),
+            _ => (2..=b).map(|k| (k as f64).log2()).sum(),
+        }
+    }
+
     /// Whether the permutation with `images` (`images[d]` = π(d), all b of them) is in the group.
     ///
     /// ```
@@ -90,7 +123,7 @@ impl NodeGroup {
     /// ```
     pub fn contains(self, images: &[u32]) -> bool {
         let b = images.len() as u32;
-        if b == 0 || !b.is_power_of_two() {
+        if b == 0 || !(b.is_power_of_two() || self.in_every_base()) {
             return false;
         }
         let mut seen = vec![false; b as usize];
@@ -263,12 +296,27 @@ mod tests {
     }
 
     #[test]
-    fn only_owen_is_owen_and_odd_sizes_are_no_permutations_of_digits() {
+    fn only_owen_is_owen_and_s_b_and_z_b_exist_in_every_base() {
         assert!(Claim::OWEN.is_owen());
         assert!(!Claim::NESTED.is_owen());
         assert!(!Claim::marginal(NodeGroup::Symmetric).is_owen());
         assert!(!Claim::independent_over(NodeGroup::Affine).is_owen());
-        assert!(!NodeGroup::Symmetric.contains(&[0, 1, 2]));
+        // S_b and Z_b exist in every base; translations and affine maps need b = 2^q.
+        assert!(NodeGroup::Symmetric.contains(&[2, 0, 1]));
+        assert!(NodeGroup::Cyclic.contains(&[2, 0, 1]));
+        assert!(!NodeGroup::Cyclic.contains(&[0, 2, 1]));
+        assert!(!NodeGroup::Translation.contains(&[0, 1, 2]));
+        assert!(!NodeGroup::Affine.contains(&[0, 1, 2]));
+        assert!(!NodeGroup::Symmetric.contains(&[0, 1, 1]));
+        assert!(!NodeGroup::Symmetric.contains(&[0, 1, 3]));
+        assert_eq!(NodeGroup::Cyclic.symbol_in_base(5), "Z_5 shifts");
+        assert_eq!(NodeGroup::Symmetric.symbol_in_base(16), "S_16");
+        assert!((NodeGroup::Symmetric.log2_order_in_base(3) - 6f64.log2()).abs() < 1e-12);
+        assert!((NodeGroup::Cyclic.log2_order_in_base(5) - 5f64.log2()).abs() < 1e-12);
+        assert_eq!(
+            NodeGroup::Affine.log2_order_in_base(16),
+            NodeGroup::Affine.log2_order(4)
+        );
         assert!(!NodeGroup::Symmetric.contains(&[]));
     }
 

@@ -11,6 +11,24 @@ pub enum CoreError {
     InvalidDigitBits(u32),
     /// A base that is not 2^q with q in 1..=8.
     NotPowerOfTwoBase(u64),
+    /// A base that is not in 3..=65535 or is a power of two (see [`crate::Radix`]).
+    InvalidRadix(u64),
+    /// A base whose one digit does not fit the word width.
+    RadixTooLarge {
+        /// The base b.
+        base: u32,
+        /// The word width W in bits.
+        width: u32,
+    },
+    /// A base-b word not below b^m.
+    RadixWordTooLarge {
+        /// The word given.
+        word: u64,
+        /// The base b.
+        base: u32,
+        /// The digits m a word holds.
+        digits: u32,
+    },
     /// A float input that is NaN.
     NotANumber,
     /// A float input outside [0, 1).
@@ -76,6 +94,17 @@ impl fmt::Display for CoreError {
             CoreError::NotPowerOfTwoBase(b) => {
                 write!(f, "base {b} is not a power of two 2^q with q in 1..=8")
             }
+            CoreError::InvalidRadix(b) => write!(
+                f,
+                "base {b} is not in 3..=65535 or is a power of two (powers of two use base 2^q digits)"
+            ),
+            CoreError::RadixTooLarge { base, width } => {
+                write!(f, "not one base-{base} digit fits a {width}-bit word")
+            }
+            CoreError::RadixWordTooLarge { word, base, digits } => write!(
+                f,
+                "word {word} is not below {base}^{digits}, the {digits} base-{base} digits a word holds"
+            ),
             CoreError::NotANumber => write!(f, "value is NaN"),
             CoreError::OutOfUnitInterval(v) => write!(f, "value {v} is outside [0, 1)"),
             CoreError::NotRepresentable { value, width } => write!(

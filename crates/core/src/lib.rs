@@ -14,6 +14,7 @@ pub mod hash;
 pub mod names;
 pub mod perm;
 pub mod progress;
+pub mod radix;
 pub mod registry;
 pub mod scrambler;
 pub mod sha256;
@@ -28,6 +29,7 @@ pub use hash::{derive_seed, hash_words, mix64, SplitMix64};
 pub use names::UnknownName;
 pub use perm::{fisher_yates, Permutation};
 pub use progress::{Progress, Silent};
+pub use radix::{Radix, RadixLayout, RadixScrambler};
 pub use registry::{BuildContext, Registry, ScramblerRequest, ScramblerSpec};
 pub use scrambler::{
     invert_nested, Identity, Scrambler, ScramblerExt, Unscramble, U32_BATCH_CHUNK,
