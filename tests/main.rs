@@ -13,6 +13,7 @@ mod non_dyadic;
 mod owen_variance;
 mod owned_check;
 mod prerequisites;
+mod radix_battery;
 mod randomization_quality;
 mod scrambled_nets;
 mod shared_requests;

@@ -7,5 +7,6 @@ pub mod exact_laws;
 pub mod inspector;
 pub mod owen_definition;
 pub mod owen_variance;
+pub mod radix_inspector;
 
 pub use owen_definition::scramble_with_nodes;

@@ -190,6 +190,27 @@ impl Claim {
         }
     }
 
+    /// This claim, if it can be judged in base `b`: its group must exist there (S_b and Z_b
+    /// in every base, the affine group and translations in bases 2^q only).
+    ///
+    /// ```
+    /// use gartowen_core::{Claim, NodeGroup};
+    /// assert!(Claim::OWEN.in_base(3).is_ok());
+    /// assert!(Claim::marginal(NodeGroup::Affine).in_base(3).is_err());
+    /// assert!(Claim::marginal(NodeGroup::Affine).in_base(8).is_ok());
+    /// ```
+    pub fn in_base(self, b: u32) -> Result<Claim, CoreError> {
+        match self.marginal {
+            Some(g) if !b.is_power_of_two() && !g.in_every_base() => {
+                Err(CoreError::ClaimNeedsPowerOfTwo {
+                    claim: self.to_string(),
+                    base: b,
+                })
+            }
+            _ => Ok(self),
+        }
+    }
+
     /// Whether this is exactly Owen's claim (independent and uniform over S_b).
     pub fn is_owen(&self) -> bool {
         *self == Claim::OWEN

@@ -29,6 +29,13 @@ pub enum CoreError {
         /// The digits m a word holds.
         digits: u32,
     },
+    /// A claim whose group exists only in bases 2^q, made in another base.
+    ClaimNeedsPowerOfTwo {
+        /// The claim.
+        claim: String,
+        /// The base b.
+        base: u32,
+    },
     /// A float input that is NaN.
     NotANumber,
     /// A float input outside [0, 1).
@@ -104,6 +111,11 @@ impl fmt::Display for CoreError {
             CoreError::RadixWordTooLarge { word, base, digits } => write!(
                 f,
                 "word {word} is not below {base}^{digits}, the {digits} base-{base} digits a word holds"
+            ),
+            CoreError::ClaimNeedsPowerOfTwo { claim, base } => write!(
+                f,
+                "claim '{claim}' names a group of base-2^q digits; in base {base} claim nested, \
+                 owen, marginal[:symmetric|:cyclic] or independent:symmetric|cyclic"
             ),
             CoreError::NotANumber => write!(f, "value is NaN"),
             CoreError::OutOfUnitInterval(v) => write!(f, "value {v} is outside [0, 1)"),

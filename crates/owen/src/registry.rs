@@ -76,8 +76,7 @@ pub fn build_radix(request: &str, radix: Radix, seed: u64) -> Result<RadixOwen, 
             scrambler: req.name.clone(),
             option: "base".into(),
             reason: format!(
-                "only owen-oracle scrambles in base {} (other bases than 2^q); \
-                 judge other implementations there with --external",
+                "only owen-oracle is built in for base {} (a base that is not 2^q)",
                 radix.get()
             ),
         });

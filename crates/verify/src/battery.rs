@@ -186,7 +186,7 @@ pub fn check_candidate(c: &Candidate, level: Level, judged: usize) -> ImplReport
     ImplReport {
         index: c.index,
         name: c.name.clone(),
-        base: c.probe.base().base(),
+        base: c.base(),
         claims_nested_uniform: c.claim.is_owen(),
         claim: c.claim.to_string(),
         checks,
@@ -217,8 +217,8 @@ pub fn verify_shard(
     let names = names_or_all(registry, names);
     let judged = names
         .iter()
-        .filter_map(|n| registry.build(n, 0).ok())
-        .filter(|s| claim.unwrap_or_else(|| s.claim()).marginal.is_some())
+        .filter_map(|n| registry_candidate(registry, n, 0).ok())
+        .filter(|c| claim.unwrap_or(c.claim).marginal.is_some())
         .count();
     let mine = (0..names.len()).filter(|k| shard.contains(*k)).count();
     progress.start(mine as u64, "implementations");
@@ -232,7 +232,7 @@ pub fn verify_shard(
         .map(|(index, name)| {
             let mut candidate = registry_candidate(registry, name, index)?;
             if let Some(c) = claim {
-                candidate.claim = c;
+                candidate.claim = c.in_base(candidate.base())?;
             }
             let report = check_candidate(&candidate, level, judged);
             progress.message(name);

@@ -2,7 +2,7 @@
 //! external programs, or any in-process builder of instances per seed.
 
 use crate::sampling::{ManySeeds, SeedBuilder};
-use gartowen_core::{BuildContext, Claim, CoreError, PowerOfTwoBase, Registry, Scrambler};
+use gartowen_core::{BuildContext, Claim, CoreError, PowerOfTwoBase, Radix, Registry, Scrambler};
 
 /// One implementation as the battery sees it, however it is reached (registry or external).
 pub struct Candidate<'a> {
@@ -25,9 +25,19 @@ pub struct Candidate<'a> {
     /// It serves dimensions 0..N only (`--max-dims N`): checks use no others, and those
     /// that need one say "not run". `None`: every dimension.
     pub max_dims: Option<u32>,
+    /// Its base when that is not a power of two: words are base-b digit integers, the probe
+    /// and instances are [`crate::radix_candidate::RadixWords`]. `None`: base 2^q, the
+    /// probe's [`Scrambler::base`].
+    pub radix: Option<Radix>,
 }
 
 impl<'a> Candidate<'a> {
+    /// The base b its digits are in.
+    pub fn base(&self) -> u32 {
+        self.radix
+            .map_or_else(|| self.probe.base().base(), |r| r.get())
+    }
+
     /// An in-process candidate judged on `claim`, with instances from `with_seed`
     /// (the probe is seed 0's instance).
     pub fn from_builder(
@@ -45,6 +55,7 @@ impl<'a> Candidate<'a> {
             twin: None,
             claim,
             max_dims: None,
+            radix: None,
         })
     }
 }
@@ -68,12 +79,17 @@ pub fn registry_seeds<'a>(
     })
 }
 
-/// The candidate for registry entry `request` at position `index`.
+/// The candidate for registry entry `request` at position `index` (a request whose
+/// `:base=B` is not a power of two is the built-in of that base: see
+/// [`crate::radix_candidate::radix_candidate`]).
 pub fn registry_candidate<'a>(
     registry: &'a Registry,
     request: &'a str,
     index: usize,
 ) -> Result<Candidate<'a>, CoreError> {
+    if let Some(radix) = gartowen_owen::registry::requested_radix(request, 2)? {
+        return crate::radix_candidate::radix_candidate(request, radix, index);
+    }
     let probe = registry.build(request, 0)?;
     let base = probe.base();
     Ok(Candidate {
@@ -86,6 +102,7 @@ pub fn registry_candidate<'a>(
         health: Box::new(|| None),
         twin: None,
         max_dims: None,
+        radix: None,
     })
 }
 
@@ -128,5 +145,6 @@ pub fn external_candidate<'a>(
             (request.to_string(), registry_seeds(registry, request, base))
         }),
         max_dims: None,
+        radix: None,
     }
 }

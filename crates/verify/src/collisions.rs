@@ -36,17 +36,17 @@ pub const COLLISION_WORDS_PER_DEPTH: u64 = 1 << 19;
 /// within 4096 words per node, or failing that within 65,536.
 pub fn collision_plan(cfg: &LawConfig) -> Option<CollisionPlan> {
     let tree = &cfg.tree;
-    let (b, q) = (tree.b() as u64, tree.q());
+    let (b, log2_b) = (tree.b() as u64, tree.log2_b());
     let nodes_cap = cfg.plan.collision_nodes;
     let seeds = cfg.plan.collision_seeds;
-    let log2_group = cfg.group().log2_order(q);
+    let log2_group = cfg.group().log2_order_in_base(tree.b());
     let pairs_log2 = ((nodes_cap * nodes_cap / 2) as f64 * seeds as f64 * 16.0).log2();
     let rare_within = |cap: u64| {
         (1..=12u32).find(|&h| {
             let words = b.checked_pow(h).unwrap_or(u64::MAX);
             let n_nodes = (words - 1) / (b - 1);
             words <= cap
-                && n_nodes as f64 * log2_group - (h * q) as f64 >= 40.0 + pairs_log2
+                && n_nodes as f64 * log2_group - h as f64 * log2_b >= 40.0 + pairs_log2
                 && h < tree.full_digits()
         })
     };
@@ -55,7 +55,7 @@ pub fn collision_plan(cfg: &LawConfig) -> Option<CollisionPlan> {
     // with fewer nodes per depth (the memory bound below).
     let height = rare_within(4096).or_else(|| rare_within(1 << 16))?;
     let log2_pair_probability =
-        (height * q) as f64 - ((b.pow(height) - 1) / (b - 1)) as f64 * log2_group;
+        height as f64 * log2_b - ((b.pow(height) - 1) / (b - 1)) as f64 * log2_group;
     // Memory: at most COLLISION_WORDS_PER_DEPTH words per depth and seed.
     let nodes_cap = nodes_cap.min(((COLLISION_WORDS_PER_DEPTH / b.pow(height)) as usize).max(2));
     let mut rng = SplitMix64::new(COLLISION_SEED);
@@ -137,7 +137,9 @@ fn collision_counts(
                 let sig: Vec<u32> = out
                     .iter()
                     .flat_map(|&y| {
-                        (0..h).map(move |l| tree.digit(y, k + l) ^ tree.digit(out[0], k + l))
+                        (0..h).map(move |l| {
+                            tree.digit_difference(tree.digit(y, k + l), tree.digit(out[0], k + l))
+                        })
                     })
                     .collect();
                 let e = seen.entry(sig).or_insert(0);

@@ -26,9 +26,10 @@ const ROOT_PAIRS: [(u32, u32); 6] = [(0, 1), (0, 2), (1, 2), (0, 7), (3, 8), (0,
 
 /// Distinctness probes: the same sampled words in every dimension 0..64 that is served.
 fn distinct_probes(cfg: &LawConfig) -> Vec<Probe> {
-    let mask = cfg.tree.layout.width().mask();
     let mut rng = SplitMix64::new(WORDS_SEED);
-    let words: Vec<u64> = (0..DISTINCT_WORDS).map(|_| rng.next_u64() & mask).collect();
+    let words: Vec<u64> = (0..DISTINCT_WORDS)
+        .map(|_| cfg.tree.random_word(&mut rng))
+        .collect();
     (0..usable_dims(cfg.max_dims, DISTINCT_DIMS))
         .map(|dim| Probe {
             dim,

@@ -27,12 +27,27 @@ fn unserved(cfg: &LawConfig) -> Option<String> {
     RANK_DIMS.iter().find_map(|&dim| cfg.beyond(dim))
 }
 
+/// Why the test does not apply: node bits are GF(2) coordinates only in a base 2^q.
+fn not_applicable(cfg: &LawConfig) -> Option<String> {
+    cfg.tree.power_of_two().is_none().then(|| {
+        format!(
+            "not applicable in base {}: node bits are GF(2) coordinates only in a base 2^q",
+            cfg.tree.b()
+        )
+    })
+}
+
+/// The digit size q (the tree's base is 2^q here: see [`not_applicable`]).
+fn digit_bits(tree: &Tree) -> u32 {
+    tree.power_of_two().map_or(1, |b| b.q())
+}
+
 /// Rows beyond the column count: a full-rank matrix is then missed with probability < 2^-40.
 const RANK_MARGIN: u64 = 40;
 
 /// The deepest D with at most `cap` columns over both dimensions.
 pub fn rank_plan(cfg: &LawConfig, cap: usize) -> RankPlan {
-    let (b, q) = (cfg.tree.b() as usize, cfg.tree.q() as usize);
+    let (b, q) = (cfg.tree.b() as usize, digit_bits(&cfg.tree) as usize);
     let cols = |d: u32| RANK_DIMS.len() * q * (b.pow(d + 1) - 1) / (b - 1);
     let mut depth = 0;
     while depth < *cfg.depths().end() && cols(depth + 1) <= cap {
@@ -83,7 +98,7 @@ struct Column {
 /// appear when that depth's columns join).
 fn rank_analyse(cfg: &LawConfig, plan: RankPlan, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
     let tree = &cfg.tree;
-    let (b, q) = (tree.b() as u64, tree.q());
+    let (b, q) = (tree.b() as u64, digit_bits(tree));
     let n = outputs.len();
     let row_words = n.div_ceil(64);
     // Columns in depth order (constant column first), each a bit vector over seeds.
@@ -228,13 +243,17 @@ impl LawFamily for FlipRank {
     }
 
     fn shared_probes(&self, cfg: &LawConfig) -> Vec<Probe> {
-        if unserved(cfg).is_some() {
+        if unserved(cfg).or_else(|| not_applicable(cfg)).is_some() {
             return Vec::new();
         }
         rank_probes(cfg, rank_plan(cfg, cfg.plan.rank_columns))
     }
 
     fn analyse_shared(&self, cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
+        if let Some(why) = not_applicable(cfg) {
+            let name = "π(0) bits of every node, dims 0-1: full GF(2) rank".to_string();
+            return vec![SubTest::not_run(name, None, Requirement::Independent, why)];
+        }
         let plan = rank_plan(cfg, cfg.plan.rank_columns);
         match unserved(cfg) {
             None => rank_analyse(cfg, plan, outputs),

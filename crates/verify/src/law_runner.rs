@@ -13,10 +13,9 @@ use crate::level::Level;
 use crate::marginal::NodeLaw;
 use crate::pair_law::PairLaw;
 use crate::pair_lemma::PairLemma;
-use crate::sampling::{evaluate_with, Probe, Tree};
-use crate::structure::working_width;
+use crate::sampling::{evaluate_with, Probe};
+use crate::structure::{candidate_tree, working_width};
 use crate::subtest::SubTest;
-use gartowen_core::DigitLayout;
 use std::cell::Cell;
 use std::time::Instant;
 
@@ -33,9 +32,8 @@ pub const FAMILIES: [&dyn LawFamily; 6] = [
 /// The law settings of candidate `c` at `level`: its working width and base, its claim, the
 /// level's plan.
 pub fn config(c: &Candidate, level: Level) -> LawConfig {
-    let probe = c.probe.as_ref();
     LawConfig {
-        tree: Tree::new(DigitLayout::new(working_width(probe), probe.base())),
+        tree: candidate_tree(c, working_width(c.probe.as_ref())),
         claim: c.claim,
         plan: *level.plan(),
         max_dims: c.max_dims,
@@ -76,7 +74,7 @@ pub fn run_laws_timed(
     seed_base: u64,
 ) -> Result<Vec<FamilyRun>, crate::error::BatteryError> {
     let cfg = config(c, level);
-    let width = cfg.tree.layout.width();
+    let width = cfg.tree.width();
     let groups: Vec<Vec<Probe>> = FAMILIES.iter().map(|f| f.shared_probes(&cfg)).collect();
     let all: Vec<Probe> = groups.iter().flatten().cloned().collect();
     let started = Instant::now();

@@ -93,6 +93,8 @@ fn analyse(cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
         let mut counts = vec![0u64; cells];
         let mut affine_hits = 0u64;
         let mut members = 0u64;
+        // π(3) = π(0)⊕π(1)⊕π(2) has probability 1/(b − 3) under S_b only in a base 2^q.
+        let affine_test = b >= 8 && cfg.tree.power_of_two().is_some();
         for seed_out in outputs {
             let imgs: Vec<u32> = seed_out[i].iter().map(|&y| cfg.tree.digit(y, k)).collect();
             if !member(g, b, &imgs) {
@@ -107,14 +109,14 @@ fn analyse(cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
                 (crate::sampling::fold(imgs[0], b) * f + crate::sampling::fold(imgs[1], b)) as usize
             };
             counts[cell] += 1;
-            if b >= 8 {
+            if affine_test {
                 affine_hits += (imgs[3] == imgs[0] ^ imgs[1] ^ imgs[2]) as u64;
             }
         }
         tests.push(SubTest {
             name: format!(
                 "{node}: every permutation in {}{}",
-                g.symbol(cfg.tree.q()),
+                g.symbol_in_base(b),
                 first_outsider.map_or(String::new(), |p| format!(
                     " (first outsider: images {p:?})"
                 ))
@@ -142,13 +144,13 @@ fn analyse(cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
                 } else {
                     "(π(0), π(1))"
                 },
-                g.symbol(cfg.tree.q())
+                g.symbol_in_base(b)
             ),
             Some(k),
             Requirement::Marginal,
             chi_square(&counts, &law),
         ));
-        if b >= 8 && g == NodeGroup::Symmetric && members > 0 {
+        if affine_test && g == NodeGroup::Symmetric && members > 0 {
             let p0 = 1.0 / (b - 3) as f64;
             let tail = if affine_hits == 0 {
                 1.0

@@ -24,19 +24,17 @@ const LEMMA_SEED: u64 = 0x6c65_6d6d; // "lemm"
 /// redrawn.
 fn pairs(cfg: &LawConfig) -> Vec<(u32, u64, u64)> {
     let tree = &cfg.tree;
-    let layout = tree.layout;
-    let mask = layout.width().mask();
     let mut rng = SplitMix64::new(LEMMA_SEED);
     cfg.depths()
         .filter(|&r| r + 1 < tree.full_digits())
         .map(|r| {
-            let u = rng.next_u64() & mask;
-            let mut v = rng.next_u64() & mask;
+            let u = tree.random_word(&mut rng);
+            let mut v = tree.random_word(&mut rng);
             for k in 0..r {
-                v = layout.set(v, k, layout.get(u, k));
+                v = tree.set(v, k, tree.digit(u, k));
             }
-            let ur = layout.get(u, r);
-            v = layout.set(v, r, (ur + 1 + rng.bounded(tree.b() - 1)) % tree.b());
+            let ur = tree.digit(u, r);
+            v = tree.set(v, r, (ur + 1 + rng.bounded(tree.b() - 1)) % tree.b());
             (r, u, v)
         })
         .collect()

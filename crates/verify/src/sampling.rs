@@ -9,7 +9,7 @@
 //! word (p, d, 0, 0, …), for any nested scramble.
 
 use crate::error::BatteryError;
-use gartowen_core::{DigitLayout, Scrambler, SplitMix64, Width};
+use gartowen_core::{DigitLayout, PowerOfTwoBase, RadixLayout, Scrambler, SplitMix64, Width};
 use rayon::prelude::*;
 
 /// Builds the instance of an implementation for one seed.
@@ -149,32 +149,96 @@ pub fn evaluate(
         .collect()
 }
 
+/// How a tree's words hold digits: base 2^q bits, or an integer of base-b digits.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TreeDigits {
+    /// Base 2^q, digits in the word's bits (tail digit included).
+    PowerOfTwo(DigitLayout),
+    /// A base that is not a power of two: the word is an integer below b^m.
+    Radix(RadixLayout),
+}
+
 /// Node addressing in one layout: words for nodes and digits of outputs.
 #[derive(Debug, Clone, Copy)]
 pub struct Tree {
-    /// The digit layout (width and base).
-    pub layout: DigitLayout,
+    /// How the words hold digits.
+    pub digits: TreeDigits,
 }
 
 impl Tree {
-    /// The tree of `width`-bit words in `base`.
+    /// The tree of `width`-bit words in base 2^q.
     pub fn new(layout: DigitLayout) -> Self {
-        Tree { layout }
+        Tree {
+            digits: TreeDigits::PowerOfTwo(layout),
+        }
     }
 
-    /// Digits per full digit (q).
-    pub fn q(&self) -> u32 {
-        self.layout.base().q()
+    /// The tree of base-b digit integers (b not a power of two).
+    pub fn radix(layout: RadixLayout) -> Self {
+        Tree {
+            digits: TreeDigits::Radix(layout),
+        }
+    }
+
+    /// The word width.
+    pub fn width(&self) -> Width {
+        match self.digits {
+            TreeDigits::PowerOfTwo(l) => l.width(),
+            TreeDigits::Radix(l) => l.width(),
+        }
+    }
+
+    /// The base 2^q, when the base is a power of two.
+    pub fn power_of_two(&self) -> Option<PowerOfTwoBase> {
+        match self.digits {
+            TreeDigits::PowerOfTwo(l) => Some(l.base()),
+            TreeDigits::Radix(_) => None,
+        }
     }
 
     /// The base b.
     pub fn b(&self) -> u32 {
-        self.layout.base().base()
+        match self.digits {
+            TreeDigits::PowerOfTwo(l) => l.base().base(),
+            TreeDigits::Radix(l) => l.radix().get(),
+        }
     }
 
-    /// Full (q-bit) digits in a word.
+    /// log2 of the base.
+    pub fn log2_b(&self) -> f64 {
+        (self.b() as f64).log2()
+    }
+
+    /// Full digits in a word (of b values each; a power-of-two layout's tail digit excluded).
     pub fn full_digits(&self) -> u32 {
-        self.layout.full_digits()
+        match self.digits {
+            TreeDigits::PowerOfTwo(l) => l.full_digits(),
+            TreeDigits::Radix(l) => l.num_digits(),
+        }
+    }
+
+    /// Digits in a word, a power-of-two layout's tail digit included.
+    pub fn num_digits(&self) -> u32 {
+        match self.digits {
+            TreeDigits::PowerOfTwo(l) => l.num_digits(),
+            TreeDigits::Radix(l) => l.num_digits(),
+        }
+    }
+
+    /// Digit `k` of `y`.
+    pub fn digit(&self, y: u64, k: u32) -> u32 {
+        match self.digits {
+            TreeDigits::PowerOfTwo(l) => l.get(y, k),
+            TreeDigits::Radix(l) => l.get(y, k),
+        }
+    }
+
+    /// `x` with digit `k` replaced by `d`.
+    pub fn set(&self, x: u64, k: u32, d: u32) -> u64 {
+        match self.digits {
+            TreeDigits::PowerOfTwo(l) => l.set(x, k, d),
+            TreeDigits::Radix(l) => l.set(x, k, d),
+        }
     }
 
     /// The word with digits `prefix` (most significant first), then `d` at position
@@ -182,25 +246,63 @@ impl Tree {
     pub fn word(&self, prefix: &[u32], d: u32) -> u64 {
         let mut x = 0u64;
         for (k, &p) in prefix.iter().enumerate() {
-            x = self.layout.set(x, k as u32, p);
+            x = self.set(x, k as u32, p);
         }
         let at = prefix.len() as u32;
-        if at < self.layout.num_digits() {
-            x = self.layout.set(x, at, d);
+        if at < self.num_digits() {
+            x = self.set(x, at, d);
         } else {
             debug_assert_eq!(d, 0, "no digit {at} to hold {d}");
         }
         x
     }
 
-    /// Digit `k` of `y`.
-    pub fn digit(&self, y: u64, k: u32) -> u32 {
-        self.layout.get(y, k)
+    /// A uniformly random word (every W-bit word, or every integer below b^m).
+    pub fn random_word(&self, rng: &mut SplitMix64) -> u64 {
+        match self.digits {
+            TreeDigits::PowerOfTwo(l) => rng.next_u64() & l.width().mask(),
+            TreeDigits::Radix(l) => {
+                // Rejection keeps every word equally likely.
+                let n = l.capacity();
+                let zone = u64::MAX - u64::MAX % n;
+                loop {
+                    let r = rng.next_u64();
+                    if r < zone {
+                        return r % n;
+                    }
+                }
+            }
+        }
+    }
+
+    /// Whether `y` is a word of the tree (W bits, or below b^m).
+    pub fn holds(&self, y: u64) -> bool {
+        match self.digits {
+            TreeDigits::PowerOfTwo(l) => l.width().check(y).is_ok(),
+            TreeDigits::Radix(l) => l.check(y).is_ok(),
+        }
+    }
+
+    /// The largest word (2^W − 1, or b^m − 1).
+    pub fn largest_word(&self) -> u64 {
+        match self.digits {
+            TreeDigits::PowerOfTwo(l) => l.width().mask(),
+            TreeDigits::Radix(l) => l.capacity() - 1,
+        }
     }
 
     /// A pseudo-random prefix of `depth` full digits.
     pub fn random_prefix(&self, depth: u32, rng: &mut SplitMix64) -> Vec<u32> {
         (0..depth).map(|_| rng.bounded(self.b())).collect()
+    }
+
+    /// The difference of two digits that cancels the group's translation part: XOR in base
+    /// 2^q, subtraction mod b otherwise.
+    pub fn digit_difference(&self, y: u32, origin: u32) -> u32 {
+        match self.digits {
+            TreeDigits::PowerOfTwo(_) => y ^ origin,
+            TreeDigits::Radix(_) => (y + self.b() - origin) % self.b(),
+        }
     }
 }
 

@@ -19,10 +19,13 @@
 use crate::candidate::Candidate;
 use crate::family::usable_dims;
 use crate::level::LevelPlan;
+use crate::radix_candidate::radix_tree;
 use crate::sampling::SeedBuilder;
+use crate::sampling::Tree;
 use crate::verdict::Outcome;
-use gartowen_core::{Scrambler, SplitMix64, Width};
+use gartowen_core::{DigitLayout, Radix, RadixLayout, Scrambler, SplitMix64, Width};
 use gartowen_oracles::inspector::{inspect_exhaustive, inspect_probes_batched};
+use gartowen_oracles::radix_inspector::inspect_radix_probes;
 
 /// When a structure check runs relative to the law families.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -55,14 +58,14 @@ pub const STRUCTURE_CHECKS: [StructureCheck; 6] = [
         what: "unscramble(scramble(x)) = x on seeded words of every supported width",
         stage: Stage::BeforeLaws,
         applies: |c| c.probe.inverse().is_some(),
-        run: |c, plan| check_inverse(c.probe.as_ref(), plan, c.max_dims),
+        run: check_inverse,
     },
     StructureCheck {
         name: "injective",
         what: "no inverse to test: images in range, no two inputs of a dimension collide",
         stage: Stage::BeforeLaws,
         applies: |c| c.probe.inverse().is_none(),
-        run: |c, plan| check_injective(c.probe.as_ref(), plan, c.max_dims),
+        run: check_injective,
     },
     StructureCheck {
         name: "function",
@@ -76,14 +79,23 @@ pub const STRUCTURE_CHECKS: [StructureCheck; 6] = [
         what: "output digit k depends only on input digits 0..k; node maps bijective",
         stage: Stage::BeforeLaws,
         applies: |_| true,
-        run: |c, _| check_nested(c.probe.as_ref()),
+        run: |c, _| match c.radix {
+            None => check_nested(c.probe.as_ref()),
+            Some(radix) => check_nested_radix(c.probe.as_ref(), radix),
+        },
     },
     StructureCheck {
         name: "nets",
         what: "nets in the scrambler's base and every base it is nested in keep their t-values",
         stage: Stage::BeforeLaws,
         applies: |_| true,
-        run: |c, plan| check_nets(c.probe.as_ref(), plan, c.max_dims),
+        run: |c, plan| match c.radix {
+            None => check_nets(c.probe.as_ref(), plan, c.max_dims),
+            Some(radix) => Outcome::skipped(format!(
+                "nets are checked in bases 2^q only, not yet in base {}",
+                radix.get()
+            )),
+        },
     },
     StructureCheck {
         name: "expect",
@@ -125,18 +137,29 @@ pub fn working_width(s: &dyn Scrambler) -> Width {
     }
 }
 
-fn check_inverse(s: &dyn Scrambler, plan: &LevelPlan, max_dims: Option<u32>) -> Outcome {
+/// The words of `width` bits the candidate scrambles, and their digits: base-b digit
+/// integers for a candidate in a base that is not a power of two, else base-2^q bits.
+pub fn candidate_tree(c: &Candidate, width: Width) -> Tree {
+    match c.radix {
+        Some(radix) => radix_tree(radix, width).expect("supported widths hold a digit"),
+        None => Tree::new(DigitLayout::new(width, c.probe.base())),
+    }
+}
+
+fn check_inverse(c: &Candidate, plan: &LevelPlan) -> Outcome {
+    let (s, max_dims) = (c.probe.as_ref(), c.max_dims);
     let Some(inverse) = s.inverse() else {
         return Outcome::fail("the implementation offers no inverse (Scrambler::inverse is None)");
     };
     let n = plan.inverse_words;
     let mut rng = SplitMix64::new(INVERSE_SEED);
     for width in supported_widths(s) {
+        let tree = candidate_tree(c, width);
         for _ in 0..n {
-            let x = rng.next_u64() & width.mask();
+            let x = tree.random_word(&mut rng);
             let dim = rng.bounded(usable_dims(max_dims, 8));
             let y = s.scramble(x, width, dim);
-            if width.check(y).is_err() || inverse.unscramble(y, width, dim) != x {
+            if !tree.holds(y) || inverse.unscramble(y, width, dim) != x {
                 return Outcome::fail(format!(
                     "{}-bit word {x:#x} (dim {dim}) -> {y:#x} does not invert",
                     width.bits()
@@ -147,19 +170,21 @@ fn check_inverse(s: &dyn Scrambler, plan: &LevelPlan, max_dims: Option<u32>) -> 
     Outcome::pass(format!("{n} words per supported width invert"))
 }
 
-fn check_injective(s: &dyn Scrambler, plan: &LevelPlan, max_dims: Option<u32>) -> Outcome {
+fn check_injective(c: &Candidate, plan: &LevelPlan) -> Outcome {
+    let (s, max_dims) = (c.probe.as_ref(), c.max_dims);
     let n = plan.injective_words;
     let mut rng = SplitMix64::new(INVERSE_SEED);
     for width in supported_widths(s) {
+        let tree = candidate_tree(c, width);
         for dim in 0..usable_dims(max_dims, 4) {
-            let mut inputs: Vec<u64> = (0..n).map(|_| rng.next_u64() & width.mask()).collect();
+            let mut inputs: Vec<u64> = (0..n).map(|_| tree.random_word(&mut rng)).collect();
             inputs.sort_unstable();
             inputs.dedup();
             let mut outputs = inputs.clone();
             s.scramble_batch(&mut outputs, width, dim);
             let mut seen = std::collections::HashMap::with_capacity(inputs.len());
             for (&x, &y) in inputs.iter().zip(&outputs) {
-                if width.check(y).is_err() {
+                if !tree.holds(y) {
                     return Outcome::fail(format!(
                         "{}-bit word {x:#x} (dim {dim}) -> {y:#x} is out of range",
                         width.bits()
@@ -189,6 +214,7 @@ pub const FUNCTION_SEED: u64 = 0xF0_0C7;
 fn check_function(c: &Candidate, _plan: &LevelPlan) -> Outcome {
     let probe = c.probe.as_ref();
     let width = working_width(probe);
+    let tree = candidate_tree(c, width);
     let mut rng = SplitMix64::new(FUNCTION_SEED);
     let differs = |what: &str, dim: u32, x: u64, y: u64, z: u64| {
         Outcome::fail(format!(
@@ -205,8 +231,8 @@ fn check_function(c: &Candidate, _plan: &LevelPlan) -> Outcome {
         let xs: Vec<u64> = (0..FUNCTION_WORDS)
             .map(|k| match k {
                 0 => 0,
-                1 => width.mask(),
-                _ => rng.next_u64() & width.mask(),
+                1 => tree.largest_word(),
+                _ => tree.random_word(&mut rng),
             })
             .collect();
         let batch = |s: &dyn Scrambler, words: &[u64]| {
@@ -272,6 +298,27 @@ fn check_nested(s: &dyn Scrambler) -> Outcome {
     }
 }
 
+/// `nested` in a base that is not a power of two: the probe inspector at the working width.
+fn check_nested_radix(s: &dyn Scrambler, radix: Radix) -> Outcome {
+    let width = working_width(s);
+    let Ok(layout) = RadixLayout::new(width, radix) else {
+        return Outcome::skipped(format!("no base-{} digit fits a word", radix.get()));
+    };
+    let batch = |words: &mut [u64]| s.scramble_batch(words, width, 0);
+    let report = inspect_radix_probes(&batch, layout, NESTED_PROBES, PROBE_SEED);
+    match report.first_violation {
+        None => Outcome::pass(format!(
+            "nested in base {} ({} nodes)",
+            radix.get(),
+            report.nodes_checked
+        )),
+        Some(v) => Outcome::fail(format!(
+            "{:?} at depth {}, prefix {}: inputs {}, {} -> outputs {}, {}",
+            v.kind, v.depth, v.prefix, v.inputs[0], v.inputs[1], v.outputs[0], v.outputs[1]
+        )),
+    }
+}
+
 fn check_nets(s: &dyn Scrambler, plan: &LevelPlan, max_dims: Option<u32>) -> Outcome {
     let width = working_width(s);
     if !s.supports_width(width) {
@@ -290,6 +337,7 @@ fn check_nets(s: &dyn Scrambler, plan: &LevelPlan, max_dims: Option<u32>) -> Out
 fn check_twin(c: &Candidate, twin_name: &str, twin: &SeedBuilder, plan: &LevelPlan) -> Outcome {
     let words = plan.twin_words;
     let width = working_width(c.probe.as_ref());
+    let tree = candidate_tree(c, width);
     let mut rng = SplitMix64::new(TWIN_SEED);
     let mut compared = 0u64;
     for seed in 0..4u64 {
@@ -309,8 +357,8 @@ fn check_twin(c: &Candidate, twin_name: &str, twin: &SeedBuilder, plan: &LevelPl
             let xs: Vec<u64> = (0..words)
                 .map(|k| match k {
                     0 => 0,
-                    1 => width.mask(),
-                    _ => rng.next_u64() & width.mask(),
+                    1 => tree.largest_word(),
+                    _ => tree.random_word(&mut rng),
                 })
                 .collect();
             // One batch each: an external or Python implementation answers one request.

@@ -199,6 +199,7 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
             twin: None,
             claim: s.claim(),
             max_dims: None,
+            radix: None,
         };
         let outcome = (check.run)(&c, Level::Quick.plan());
         if let Some(e) = process.as_ref().and_then(|p| p.failure()) {
@@ -250,6 +251,7 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
             twin: None,
             claim,
             max_dims: None,
+            radix: None,
         };
         let families = run_laws(&c, Level::Quick, 0).map_err(|e| CliError::Usage(e.to_string()))?;
         if let Some(e) = external_failure() {

@@ -291,7 +291,7 @@ fn registry_expectation(
             .collect()
     };
     Ok(Expectation {
-        base: c.probe.base().base(),
+        base: c.base(),
         claim: claim_override.unwrap_or(c.claim),
         before: stage(Stage::BeforeLaws),
         after: stage(Stage::AfterLaws),

@@ -1,0 +1,82 @@
+//! Candidates in a base that is not a power of two (3, 5, 6, 7, …): the battery reaches them
+//! through [`RadixWords`], and every check reads their digits through [`radix_tree`].
+
+use crate::candidate::Candidate;
+use crate::sampling::Tree;
+use gartowen_core::{
+    Claim, CoreError, PowerOfTwoBase, Radix, RadixLayout, RadixScrambler, Scrambler, Unscramble,
+    Width,
+};
+use gartowen_owen::registry::build_radix;
+
+/// A base-b scrambler as a map of words, for the battery's shared machinery (evaluation
+/// passes, the `function` and `expect` comparisons). The words are base-b digit integers;
+/// [`Scrambler::base`] answers base 2 only because the trait needs a power of two: no check
+/// of a candidate with [`Candidate::radix`] set reads it.
+pub struct RadixWords(pub Box<dyn RadixScrambler>);
+
+impl Scrambler for RadixWords {
+    fn name(&self) -> String {
+        self.0.name()
+    }
+    fn base(&self) -> PowerOfTwoBase {
+        PowerOfTwoBase::B2
+    }
+    fn claim(&self) -> Claim {
+        self.0.claim()
+    }
+    fn scramble(&self, x: u64, width: Width, dim: u32) -> u64 {
+        self.0.scramble(x, width, dim)
+    }
+    fn scramble_batch(&self, words: &mut [u64], width: Width, dim: u32) {
+        self.0.scramble_batch(words, width, dim)
+    }
+    fn supports_width(&self, width: Width) -> bool {
+        RadixLayout::new(width, self.0.radix()).is_ok()
+    }
+    fn inverse(&self) -> Option<&dyn Unscramble> {
+        self.0
+            .unscramble(0, Width::W32, 0)
+            .is_some()
+            .then_some(self as &dyn Unscramble)
+    }
+}
+
+impl Unscramble for RadixWords {
+    fn unscramble(&self, y: u64, width: Width, dim: u32) -> u64 {
+        self.0
+            .unscramble(y, width, dim)
+            .expect("inverse() offers it only when present")
+    }
+}
+
+/// The tree of `width`-bit words in base `radix`.
+pub fn radix_tree(radix: Radix, width: Width) -> Result<Tree, CoreError> {
+    Ok(Tree::radix(RadixLayout::new(width, radix)?))
+}
+
+/// The candidate for the built-in `request` in base `radix` (see
+/// [`gartowen_owen::registry::build_radix`]) at position `index`.
+pub fn radix_candidate<'a>(
+    request: &str,
+    radix: Radix,
+    index: usize,
+) -> Result<Candidate<'a>, CoreError> {
+    let probe = build_radix(request, radix, 0)?;
+    let request = request.to_string();
+    Ok(Candidate {
+        index,
+        name: probe.name(),
+        claim: probe.claim(),
+        probe: Box::new(RadixWords(Box::new(probe))),
+        with_seed: Box::new(move |seed| {
+            let s = build_radix(&request, radix, seed).map_err(|e| e.to_string())?;
+            Ok(Box::new(RadixWords(Box::new(s))) as Box<dyn Scrambler>)
+        }),
+        many: None,
+        health: Box::new(|| None),
+        twin: None,
+        max_dims: None,
+        radix: Some(radix),
+    })
+}
