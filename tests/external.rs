@@ -368,13 +368,15 @@ fn a_well_behaved_program_exits_when_the_session_ends() {
 
 mod protocol_fuzz {
     use gartowen::core::{PowerOfTwoBase, Width};
-    use gartowen::external::{decode_reply, decode_request, encode_request, RequestHeader};
+    use gartowen::external::{
+        decode_reply, decode_request, encode_request, ProtocolBase, RequestHeader,
+    };
     use proptest::prelude::*;
 
     fn header(width64: bool, q: u32, dim: u32, seed: u64) -> RequestHeader {
         RequestHeader {
             width: if width64 { Width::W64 } else { Width::W32 },
-            base: PowerOfTwoBase::from_q(q).unwrap(),
+            base: PowerOfTwoBase::from_q(q).unwrap().into(),
             dim,
             seed,
         }
@@ -405,6 +407,34 @@ mod protocol_fuzz {
             let (back, decoded) = decode_request(&encode_request(&h, &words).unwrap()).unwrap();
             prop_assert_eq!(back, h);
             prop_assert_eq!(decoded, words);
+        }
+
+        /// Version 2 frames (bases that are not powers of two) round-trip too, and carry
+        /// version 2; the same bytes with version 1 are refused, as is version 2 naming a
+        /// power of two.
+        #[test]
+        fn base_b_requests_round_trip_and_versions_match_their_bases(
+            b in 3u32..=65_535, width64 in any::<bool>(), dim in any::<u32>(),
+            seed in any::<u64>(), words in proptest::collection::vec(any::<u32>(), 1..40)) {
+            prop_assume!(!b.is_power_of_two());
+            let h = RequestHeader {
+                width: if width64 { Width::W64 } else { Width::W32 },
+                base: ProtocolBase::from_base(u64::from(b)).unwrap(),
+                dim,
+                seed,
+            };
+            let words: Vec<u64> = words.into_iter().map(u64::from).collect();
+            let mut frame = encode_request(&h, &words).unwrap();
+            prop_assert_eq!(&frame[4..6], &[2u8, 0][..]);
+            let (back, decoded) = decode_request(&frame).unwrap();
+            prop_assert_eq!(back, h);
+            prop_assert_eq!(decoded, words.clone());
+            frame[4] = 1;
+            prop_assert!(decode_request(&frame).is_err());
+            let q = b.ilog2().clamp(1, 8);
+            let mut binary = encode_request(&header(width64, q, dim, seed), &words).unwrap();
+            binary[4] = 2;
+            prop_assert!(decode_request(&binary).is_err());
         }
 
         /// A corrupted header byte either is rejected or decodes to a frame that differs

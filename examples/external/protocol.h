@@ -1,9 +1,15 @@
-/* The gartowen external-scrambler protocol, version 1 (see README.md, "External
- * implementations"): little-endian request frames on stdin, replies on stdout.
+/* The gartowen external-scrambler protocol, versions 1 and 2 (see docs/external.md):
+ * little-endian request frames on stdin, replies on stdout. Version 1 requests name a base
+ * b = 2^q and carry W-bit binary fractions; version 2 requests name any other base b and carry
+ * integers below b^m (m base-b digits, the most that fit W bits; radix_digits.h).
  *
  * A scrambler includes this file, defines
  *     uint64_t scramble(uint64_t x, unsigned width, uint32_t base, uint32_t dim, uint64_t seed);
  * and calls serve(argv[0]) from main.
+ *
+ * A program for version 2 (base-b digit integers) defines SERVES_BASE_B_DIGITS before including
+ * this file (radix_digits.h does); every other program serves version 1 only, and exits with
+ * status 3 on a request of the other version.
  *
  * Built with -DSERVED_DIMS=N, the program serves dimensions 0..N-1 only and exits with status 4
  * on a request for another (a sampler with N dimensions per domain); verify it with
@@ -14,6 +20,12 @@
 #include <string.h>
 
 static uint64_t scramble(uint64_t x, unsigned width, uint32_t base, uint32_t dim, uint64_t seed);
+
+#ifdef SERVES_BASE_B_DIGITS
+#define SERVED_VERSION 2u
+#else
+#define SERVED_VERSION 1u
+#endif
 
 static uint64_t get_le(const unsigned char *p, unsigned n) {
     uint64_t v = 0;
@@ -41,7 +53,8 @@ static int serve(const char *self) {
         uint32_t dim = (uint32_t)get_le(header + 12, 4);
         uint32_t count = (uint32_t)get_le(header + 16, 4);
         uint64_t seed = get_le(header + 24, 8);
-        if (version != 1 || (width != 32 && width != 64) || count == 0 || count > (1u << 20)) {
+        if (version != SERVED_VERSION || (width != 32 && width != 64) || count == 0 ||
+            count > (1u << 20)) {
             fprintf(stderr, "%s: unsupported request (version %u, width %u, count %u)\n", self,
                     version, width, count);
             return 3;

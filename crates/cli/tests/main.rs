@@ -21,3 +21,4 @@ mod sweep;
 mod verify;
 mod verify_declared;
 mod verify_dims;
+mod verify_radix;

@@ -1,9 +1,10 @@
-//! One seed's view of an [`ExternalProcess`] as a [`Scrambler`].
+//! One seed's view of an [`ExternalProcess`] as a [`Scrambler`] (base 2^q) or a
+//! [`RadixScrambler`] (other bases).
 
 use crate::error::ExternalError;
 use crate::process::ExternalProcess;
 use crate::protocol::MAX_BATCH;
-use gartowen_core::{Claim, PowerOfTwoBase, Scrambler, Width};
+use gartowen_core::{Claim, PowerOfTwoBase, Radix, RadixScrambler, Scrambler, Width};
 
 use std::sync::Arc;
 
@@ -35,8 +36,13 @@ impl Scrambler for ExternalScrambler {
     fn name(&self) -> String {
         format!("external:{}", self.process.command())
     }
+    /// The process's base 2^q (a process in another base is reached through
+    /// [`ExternalRadixScrambler`], and this answers base 2 for it).
     fn base(&self) -> PowerOfTwoBase {
-        self.process.base()
+        self.process
+            .base()
+            .power_of_two()
+            .unwrap_or(PowerOfTwoBase::B2)
     }
     fn claim(&self) -> Claim {
         self.claim
@@ -69,5 +75,43 @@ impl Scrambler for ExternalScrambler {
                 chunk.fill(0);
             }
         }
+    }
+}
+
+/// One seed's view of an [`ExternalProcess`] in a base that is not a power of two (version 2
+/// frames of base-b digit integers). Calls after a failure return 0, as
+/// [`ExternalScrambler`]'s do.
+pub struct ExternalRadixScrambler {
+    words: ExternalScrambler,
+    radix: Radix,
+}
+
+impl ExternalRadixScrambler {
+    /// The scrambler with `seed` on `process`; `None` when the process's base is a power of
+    /// two (use [`ExternalScrambler`]).
+    pub fn new(process: Arc<ExternalProcess>, seed: u64, claim: Claim) -> Option<Self> {
+        let radix = process.base().radix()?;
+        Some(ExternalRadixScrambler {
+            words: ExternalScrambler::new(process, seed, claim),
+            radix,
+        })
+    }
+}
+
+impl RadixScrambler for ExternalRadixScrambler {
+    fn name(&self) -> String {
+        Scrambler::name(&self.words)
+    }
+    fn radix(&self) -> Radix {
+        self.radix
+    }
+    fn claim(&self) -> Claim {
+        self.words.claim
+    }
+    fn scramble(&self, x: u64, width: Width, dim: u32) -> u64 {
+        Scrambler::scramble(&self.words, x, width, dim)
+    }
+    fn scramble_batch(&self, words: &mut [u64], width: Width, dim: u32) {
+        Scrambler::scramble_batch(&self.words, words, width, dim)
     }
 }

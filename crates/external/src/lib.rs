@@ -8,9 +8,9 @@
 //! | offset | size | request field                                     |
 //! |--------|------|---------------------------------------------------|
 //! | 0      | 4    | magic `GOWQ` (bytes 0x47 0x4F 0x57 0x51)          |
-//! | 4      | 2    | protocol version, 1                               |
+//! | 4      | 2    | protocol version: 1 (b = 2^q) or 2 (other b)      |
 //! | 6      | 2    | word width in bits, 32 or 64                      |
-//! | 8      | 4    | base b = 2^q                                      |
+//! | 8      | 4    | base b                                            |
 //! | 12     | 4    | dimension (selects the independent scramble)      |
 //! | 16     | 4    | count n of words that follow (1 ≤ n ≤ 2^20)       |
 //! | 20     | 4    | reserved, 0                                       |
@@ -18,6 +18,12 @@
 //! | 32     | n·w/8| the input words                                   |
 //!
 //! The reply is the magic `GOWR`, the count n again (u32), then the n scrambled words in order.
+//!
+//! In version 1 (b = 2^q, q = 1..8) a word is a W-bit binary fraction, value x·2^-W, base-b
+//! digit k in its bits. Version 2 (b in 3..=65535, not a power of two) has the same framing,
+//! but a word is an integer below b^m of m base-b digits, value x·b^-m, m the most digits with
+//! b^m ≤ 2^W (base 3: 20 digits in 32 bits, 40 in 64); replies stay below b^m. A program that
+//! knows only version 1 refuses version 2 requests by exiting non-zero, as above.
 //! The child exits with status 0 when its stdin closes. A child that cannot serve a request
 //! (unknown base or width) writes a reason to stderr and exits non-zero; the host reports the
 //! stderr text. Every request names its seed, so one process serves every seed the battery
@@ -44,10 +50,10 @@ pub mod pool;
 pub mod process;
 pub mod protocol;
 
-pub use adapter::ExternalScrambler;
+pub use adapter::{ExternalRadixScrambler, ExternalScrambler};
 pub use error::ExternalError;
 pub use process::{kill_live_groups, split_command, ExternalProcess};
 pub use protocol::{
-    decode_reply, decode_request, encode_request, RequestHeader, HEADER_BYTES, MAX_BATCH,
-    PROTOCOL_VERSION, REPLY_MAGIC, REQUEST_MAGIC,
+    decode_reply, decode_request, encode_request, ProtocolBase, RequestHeader, HEADER_BYTES,
+    MAX_BATCH, PROTOCOL_VERSION, RADIX_PROTOCOL_VERSION, REPLY_MAGIC, REQUEST_MAGIC,
 };

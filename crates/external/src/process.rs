@@ -2,8 +2,9 @@
 
 use crate::deadline_write::{make_non_blocking, write_before, WriteStop};
 use crate::error::ExternalError;
+use crate::protocol::ProtocolBase;
 use crate::protocol::*;
-use gartowen_core::{PowerOfTwoBase, Width};
+use gartowen_core::Width;
 use std::io::Read;
 use std::process::{Child, ChildStdin, Command, Stdio};
 use std::sync::mpsc::{self, Receiver, RecvTimeoutError};
@@ -66,7 +67,7 @@ struct Session {
 pub struct ExternalProcess {
     command: String,
     width: Width,
-    base: PowerOfTwoBase,
+    base: ProtocolBase,
     timeout: Duration,
     stderr: Arc<Mutex<Vec<u8>>>,
     /// Inodes of the pipes to the child's stdin, stdout and stderr.
@@ -152,10 +153,11 @@ impl ExternalProcess {
     /// each reply must arrive within `timeout`.
     pub fn spawn(
         command: &str,
-        base: PowerOfTwoBase,
+        base: impl Into<ProtocolBase>,
         width: Width,
         timeout: Duration,
     ) -> Result<ExternalProcess, ExternalError> {
+        let base = base.into();
         if width != Width::W32 && width != Width::W64 {
             return Err(ExternalError::BadRequest(format!(
                 "width {} (the protocol carries 32- or 64-bit words)",
@@ -246,7 +248,7 @@ impl ExternalProcess {
     }
 
     /// The scrambling base the program was started for.
-    pub fn base(&self) -> PowerOfTwoBase {
+    pub fn base(&self) -> ProtocolBase {
         self.base
     }
 

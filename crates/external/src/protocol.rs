@@ -1,26 +1,93 @@
 //! The protocol's frames as bytes: request encoding and decoding, reply checks (no I/O).
 
 use crate::error::ExternalError;
-use gartowen_core::{PowerOfTwoBase, Width};
+use gartowen_core::{CoreError, PowerOfTwoBase, Radix, Width};
 
 /// Request magic, `GOWQ`.
 pub const REQUEST_MAGIC: [u8; 4] = *b"GOWQ";
 /// Reply magic, `GOWR`.
 pub const REPLY_MAGIC: [u8; 4] = *b"GOWR";
-/// Protocol version.
+/// Protocol version of frames in a base 2^q (words are W-bit binary fractions).
 pub const PROTOCOL_VERSION: u16 = 1;
+/// Protocol version of frames in any other base b (words are base-b digit integers below b^m,
+/// m the most digits with b^m ≤ 2^W; the framing is version 1's).
+pub const RADIX_PROTOCOL_VERSION: u16 = 2;
 /// Most words in one request.
 pub const MAX_BATCH: usize = 1 << 20;
 /// Request header length in bytes.
 pub const HEADER_BYTES: usize = 32;
+
+/// The base a request names, which fixes its version: 1 for b = 2^q, 2 for other bases.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ProtocolBase {
+    /// Base 2^q: words carry digits in their bits (version 1).
+    PowerOfTwo(PowerOfTwoBase),
+    /// Another base: words are base-b digit integers (version 2).
+    Radix(Radix),
+}
+
+impl ProtocolBase {
+    /// Base `b`: 2^q up to 256, or any base 3..=65535 that is not a power of two.
+    ///
+    /// ```
+    /// use gartowen_external::protocol::ProtocolBase;
+    /// assert_eq!(ProtocolBase::from_base(16).unwrap().version(), 1);
+    /// assert_eq!(ProtocolBase::from_base(3).unwrap().version(), 2);
+    /// assert!(ProtocolBase::from_base(1).is_err());
+    /// ```
+    pub fn from_base(b: u64) -> Result<ProtocolBase, CoreError> {
+        match PowerOfTwoBase::from_base(b) {
+            Ok(p) => Ok(ProtocolBase::PowerOfTwo(p)),
+            Err(_) => Radix::new(b).map(ProtocolBase::Radix),
+        }
+    }
+
+    /// The base b.
+    pub fn get(self) -> u32 {
+        match self {
+            ProtocolBase::PowerOfTwo(p) => p.base(),
+            ProtocolBase::Radix(r) => r.get(),
+        }
+    }
+
+    /// The protocol version of its frames.
+    pub fn version(self) -> u16 {
+        match self {
+            ProtocolBase::PowerOfTwo(_) => PROTOCOL_VERSION,
+            ProtocolBase::Radix(_) => RADIX_PROTOCOL_VERSION,
+        }
+    }
+
+    /// The base 2^q, if it is one.
+    pub fn power_of_two(self) -> Option<PowerOfTwoBase> {
+        match self {
+            ProtocolBase::PowerOfTwo(p) => Some(p),
+            ProtocolBase::Radix(_) => None,
+        }
+    }
+
+    /// The base, if it is not a power of two.
+    pub fn radix(self) -> Option<Radix> {
+        match self {
+            ProtocolBase::PowerOfTwo(_) => None,
+            ProtocolBase::Radix(r) => Some(r),
+        }
+    }
+}
+
+impl From<PowerOfTwoBase> for ProtocolBase {
+    fn from(b: PowerOfTwoBase) -> Self {
+        ProtocolBase::PowerOfTwo(b)
+    }
+}
 
 /// The fixed fields of a request.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct RequestHeader {
     /// Word width (32 or 64).
     pub width: Width,
-    /// Base 2^q.
-    pub base: PowerOfTwoBase,
+    /// The base (and with it the version).
+    pub base: ProtocolBase,
     /// Dimension.
     pub dim: u32,
     /// Seed.
@@ -47,9 +114,9 @@ pub fn encode_request(h: &RequestHeader, words: &[u64]) -> Result<Vec<u8>, Exter
 /// Appends the 32 header bytes of a request for `count` words (checked by the caller).
 pub(super) fn push_header(out: &mut Vec<u8>, h: &RequestHeader, count: usize) {
     out.extend_from_slice(&REQUEST_MAGIC);
-    out.extend_from_slice(&PROTOCOL_VERSION.to_le_bytes());
+    out.extend_from_slice(&h.base.version().to_le_bytes());
     out.extend_from_slice(&(h.width.bits() as u16).to_le_bytes());
-    out.extend_from_slice(&h.base.base().to_le_bytes());
+    out.extend_from_slice(&h.base.get().to_le_bytes());
     out.extend_from_slice(&h.dim.to_le_bytes());
     out.extend_from_slice(&(count as u32).to_le_bytes());
     out.extend_from_slice(&0u32.to_le_bytes());
@@ -70,15 +137,21 @@ pub fn decode_request(bytes: &[u8]) -> Result<(RequestHeader, Vec<u64>), String>
     }
     let u16_at = |o: usize| u16::from_le_bytes([bytes[o], bytes[o + 1]]);
     let u32_at = |o: usize| u32::from_le_bytes(bytes[o..o + 4].try_into().expect("4 bytes"));
-    if u16_at(4) != PROTOCOL_VERSION {
-        return Err(format!("protocol version {}", u16_at(4)));
+    let version = u16_at(4);
+    if version != PROTOCOL_VERSION && version != RADIX_PROTOCOL_VERSION {
+        return Err(format!("protocol version {version}"));
     }
     let width = match u16_at(6) {
         32 => Width::W32,
         64 => Width::W64,
         w => return Err(format!("width {w} is not 32 or 64")),
     };
-    let base = PowerOfTwoBase::from_base(u32_at(8) as u64).map_err(|e| e.to_string())?;
+    let b = u32_at(8) as u64;
+    let base = if version == PROTOCOL_VERSION {
+        ProtocolBase::PowerOfTwo(PowerOfTwoBase::from_base(b).map_err(|e| e.to_string())?)
+    } else {
+        ProtocolBase::Radix(Radix::new(b).map_err(|e| format!("version 2: {e}"))?)
+    };
     let count = u32_at(16) as usize;
     if count == 0 || count > MAX_BATCH {
         return Err(format!("count {count} outside 1..={MAX_BATCH}"));

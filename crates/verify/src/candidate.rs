@@ -120,31 +120,43 @@ pub fn names_or_all(registry: &Registry, names: &[String]) -> Vec<String> {
 }
 
 /// The candidate for an external program: instances for every seed share the one process;
-/// `twin` names a registry entry it must match bit for bit.
+/// `twin` names a registry entry it must match bit for bit. A process in a base that is not a
+/// power of two speaks version 2 frames and is judged on base-b digits.
 pub fn external_candidate<'a>(
     process: std::sync::Arc<crate::external::ExternalProcess>,
     seed: u64,
     claim: Claim,
     twin: Option<(&'a Registry, &'a str)>,
 ) -> Candidate<'a> {
-    use crate::external::ExternalScrambler;
+    use crate::external::{ExternalRadixScrambler, ExternalScrambler};
+    use crate::radix_candidate::RadixWords;
     let base = process.base();
+    let radix = base.radix();
     let for_seed = process.clone();
     let watched = process.clone();
+    // One seed's instance: the binary view, or the base-b view behind RadixWords.
+    let instance = move |p: std::sync::Arc<crate::external::ExternalProcess>, s: u64| {
+        match ExternalRadixScrambler::new(p.clone(), s, claim) {
+            Some(r) => Box::new(RadixWords(Box::new(r))) as Box<dyn Scrambler>,
+            None => Box::new(ExternalScrambler::new(p, s, claim)),
+        }
+    };
     Candidate {
         index: 0,
         name: format!("external:{}", process.command()),
         claim,
-        probe: Box::new(ExternalScrambler::new(process, seed, claim)),
-        with_seed: Box::new(move |s| {
-            Ok(Box::new(ExternalScrambler::new(for_seed.clone(), s, claim)))
-        }),
+        probe: instance(process, seed),
+        with_seed: Box::new(move |s| Ok(instance(for_seed.clone(), s))),
         many: None,
         health: Box::new(move || watched.failure().map(|e| e.to_string())),
         twin: twin.map(|(registry, request)| {
-            (request.to_string(), registry_seeds(registry, request, base))
+            let seeds = match radix {
+                Some(r) => crate::radix_candidate::radix_seeds(request, r),
+                None => registry_seeds(registry, request, base.power_of_two().expect("2^q")),
+            };
+            (request.to_string(), seeds)
         }),
         max_dims: None,
-        radix: None,
+        radix,
     }
 }

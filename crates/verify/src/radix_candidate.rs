@@ -2,7 +2,7 @@
 //! through [`RadixWords`], and every check reads their digits through [`radix_tree`].
 
 use crate::candidate::Candidate;
-use crate::sampling::Tree;
+use crate::sampling::{SeedBuilder, Tree};
 use gartowen_core::{
     Claim, CoreError, PowerOfTwoBase, Radix, RadixLayout, RadixScrambler, Scrambler, Unscramble,
     Width,
@@ -63,20 +63,26 @@ pub fn radix_candidate<'a>(
     index: usize,
 ) -> Result<Candidate<'a>, CoreError> {
     let probe = build_radix(request, radix, 0)?;
-    let request = request.to_string();
     Ok(Candidate {
         index,
         name: probe.name(),
         claim: probe.claim(),
         probe: Box::new(RadixWords(Box::new(probe))),
-        with_seed: Box::new(move |seed| {
-            let s = build_radix(&request, radix, seed).map_err(|e| e.to_string())?;
-            Ok(Box::new(RadixWords(Box::new(s))) as Box<dyn Scrambler>)
-        }),
+        with_seed: radix_seeds(request, radix),
         many: None,
         health: Box::new(|| None),
         twin: None,
         max_dims: None,
         radix: Some(radix),
+    })
+}
+
+/// Instances of the built-in `request` in base `radix` for any seed (an external program's
+/// `--expect` twin in that base).
+pub fn radix_seeds<'a>(request: &str, radix: Radix) -> Box<SeedBuilder<'a>> {
+    let request = request.to_string();
+    Box::new(move |seed| {
+        let s = build_radix(&request, radix, seed).map_err(|e| e.to_string())?;
+        Ok(Box::new(RadixWords(Box::new(s))) as Box<dyn Scrambler>)
     })
 }

@@ -16,7 +16,7 @@ pub mod verify;
 pub mod verify_args;
 
 use crate::CliError;
-use gartowen::core::{Claim, PowerOfTwoBase, Width};
+use gartowen::core::{Claim, Width};
 use gartowen::external::ExternalProcess;
 
 /// The word width from `--bits` (32 or 64).
@@ -53,7 +53,7 @@ pub const MAX_TIMEOUT_SECONDS: f64 = 86_400.0;
 /// and `--timeout` (finite, positive seconds, at most [`MAX_TIMEOUT_SECONDS`]).
 pub fn spawn_external(
     command: &str,
-    base: PowerOfTwoBase,
+    base: impl Into<gartowen::external::ProtocolBase>,
     width: Width,
     timeout: f64,
 ) -> Result<ExternalProcess, CliError> {

@@ -2,8 +2,10 @@
 
 pub use super::verify_args::{program_record, LevelArg, VerifyArgs};
 use crate::CliError;
+use gartowen::battery::verdict::Outcome;
 use gartowen::certificate::{CertVerdict, Certificate, InputRecord};
 use gartowen::core::{Claim, PowerOfTwoBase, Width};
+use gartowen::external::ProtocolBase;
 use gartowen::verify::{
     check_candidate, external_candidate, merge, verify_shard, CheckResult, ImplReport, Level,
     Shard, Verdict,
@@ -166,7 +168,7 @@ fn run_external(
     command: &str,
     level: Level,
 ) -> Result<(ImplReport, Option<String>), CliError> {
-    let base = PowerOfTwoBase::from_base(a.base)
+    let base = ProtocolBase::from_base(a.base)
         .map_err(|e| CliError::Usage(format!("--base {}: {e}", a.base)))?;
     let width = match a.width {
         32 => Width::W32,
@@ -178,23 +180,13 @@ fn run_external(
         }
     };
     let registry = gartowen::registry();
-    if let Some(name) = &a.expect {
-        let twin = registry
-            .build_with(
-                name,
-                &gartowen::core::BuildContext {
-                    seed: 0,
-                    default_base: base,
-                },
-            )
-            .map_err(|e| CliError::Usage(format!("--expect {name}: {e}")))?;
-        if twin.base() != base {
-            return Err(CliError::Usage(format!(
-                "--expect {name} scrambles in base {}, the program in base {}",
-                twin.base().base(),
-                base.base()
-            )));
+    match (&a.expect, base) {
+        (Some(name), ProtocolBase::Radix(radix)) => {
+            gartowen::owen::registry::build_radix(name, radix, 0)
+                .map_err(|e| CliError::Usage(format!("--expect {name}: {e}")))?;
         }
+        (Some(name), ProtocolBase::PowerOfTwo(base)) => expect_in_base(&registry, name, base)?,
+        (None, _) => {}
     }
     let process = super::spawn_external(command, base, width, a.timeout)?;
     let claim = if a.no_uniform_claim {
@@ -202,6 +194,9 @@ fn run_external(
     } else {
         super::parse_claim(&a.claim)?.unwrap_or(Claim::OWEN)
     };
+    let claim = claim
+        .in_base(base.get())
+        .map_err(|e| CliError::Usage(format!("--claim: {e}")))?;
     let process = Arc::new(process);
     let mut candidate = external_candidate(
         process.clone(),
@@ -212,16 +207,22 @@ fn run_external(
     candidate.max_dims = a.max_dims;
     let mut report = check_candidate(&candidate, level, 1);
     if a.equivalent_to.is_some() {
-        // The estimators read dimensions 0 and 1.
-        if let Some(why) = gartowen::battery::family::needs_dimension(a.max_dims, 1) {
-            let not_run = gartowen::battery::verdict::Outcome::not_run(why);
+        // The estimators read dimensions 0 and 1, in a base 2^q.
+        let why = match base {
+            ProtocolBase::Radix(r) => Some(equivalence_not_applicable(r.get())),
+            ProtocolBase::PowerOfTwo(_) => {
+                gartowen::battery::family::needs_dimension(a.max_dims, 1)
+            }
+        };
+        if let Some(why) = why {
+            let not_run = Outcome::not_run(why);
             let check = CheckResult::from_outcome("equivalent-to-owen", not_run, 0.0);
             report.checks.push(check);
             return Ok((report, process.failure().map(|e| e.to_string())));
         }
         let mut check = gartowen::battery::owen_equivalence::check_equivalent_to_owen(
             candidate.with_seed.as_ref(),
-            base,
+            base.power_of_two().expect("a base 2^q"),
             width,
             equivalence_seeds(a, level),
             a.margin,
@@ -234,6 +235,36 @@ fn run_external(
         report.checks.push(check);
     }
     Ok((report, process.failure().map(|e| e.to_string())))
+}
+
+/// Why `equivalent-to-owen` does not run in base `b` (not a power of two).
+fn equivalence_not_applicable(b: u32) -> String {
+    format!("not applicable in base {b}: the equivalence estimators are defined in bases 2^q")
+}
+
+/// Checks that `--expect NAME` is a registry entry scrambling in the program's base 2^q.
+fn expect_in_base(
+    registry: &gartowen::core::Registry,
+    name: &str,
+    base: PowerOfTwoBase,
+) -> Result<(), CliError> {
+    let twin = registry
+        .build_with(
+            name,
+            &gartowen::core::BuildContext {
+                seed: 0,
+                default_base: base,
+            },
+        )
+        .map_err(|e| CliError::Usage(format!("--expect {name}: {e}")))?;
+    if twin.base() != base {
+        return Err(CliError::Usage(format!(
+            "--expect {name} scrambles in base {}, the program in base {}",
+            twin.base().base(),
+            base.base()
+        )));
+    }
+    Ok(())
 }
 
 /// Whether `path` is a certificate of the every-word sweep (its merge is the sweep's).
@@ -302,8 +333,12 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
         let mut reports = reports;
         if a.equivalent_to.is_some() {
             for r in &mut reports {
-                let base = PowerOfTwoBase::from_base(u64::from(r.base))
-                    .map_err(|e| CliError::Usage(e.to_string()))?;
+                let Ok(base) = PowerOfTwoBase::from_base(u64::from(r.base)) else {
+                    let not_run = Outcome::not_run(equivalence_not_applicable(r.base));
+                    let check = CheckResult::from_outcome("equivalent-to-owen", not_run, 0.0);
+                    r.checks.push(check);
+                    continue;
+                };
                 let builder = gartowen::verify::registry_seeds(&registry, &r.name, base);
                 r.checks.push(
                     gartowen::battery::owen_equivalence::check_equivalent_to_owen(

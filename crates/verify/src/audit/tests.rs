@@ -16,7 +16,12 @@ fn registry() -> Registry {
 /// A certificate of a quick run over `none` (claims nothing) and the base-4 Owen oracle
 /// (claims Owen), written as `gartowen verify --json` writes it.
 fn certificate(registry: &Registry) -> Certificate {
-    let names = ["none".to_string(), "owen-oracle:base=4".to_string()];
+    certificate_of(registry, &["none", "owen-oracle:base=4"])
+}
+
+/// A certificate of a quick run over `names`, as `gartowen verify --json` writes it.
+fn certificate_of(registry: &Registry, names: &[&str]) -> Certificate {
+    let names: Vec<String> = names.iter().map(|n| n.to_string()).collect();
     let reports = verify_shard(
         registry,
         &names,
@@ -40,7 +45,7 @@ fn certificate(registry: &Registry) -> Certificate {
             "family_alpha": FAMILY_ALPHA,
             "claim_override": null,
             "shard": {"index": 1, "count": 1},
-            "implementations_total": 2,
+            "implementations_total": names.len(),
         }),
         seeds_used(0),
         vec![],
@@ -248,4 +253,36 @@ fn the_whole_run_must_hold_every_implementation_and_the_judged_count() {
         .to_string(),
         "f: p"
     );
+}
+
+#[test]
+fn in_base_3_nets_must_be_skipped_and_flip_rank_must_not_run() {
+    let registry = registry();
+    let c = certificate_of(&registry, &["owen-oracle:base=3"]);
+    let run = audit_verify(&c, &registry).unwrap();
+    assert_eq!(run.reports[0].base, 3);
+    let nets = check_at(&c, 0, "nets");
+    let rank = check_at(&c, 0, "flip-rank");
+    let at = |i: usize| format!("/result/implementations/0/checks/{i}");
+    let forged_pass = edited(&c, |v| {
+        *v.pointer_mut(&format!("{}/verdict", at(nets))).unwrap() = json!("pass")
+    });
+    let e = audit_verify(&forged_pass, &registry).unwrap_err();
+    assert_eq!(
+        e.field,
+        format!("result.implementations[0].checks[{nets}].verdict")
+    );
+    let forged_rank = edited(&c, |v| {
+        let t = v.pointer_mut(&format!("{}/tests/0", at(rank))).unwrap();
+        // A sub-test that claims to have run, with plausible numbers.
+        t["not_run"] = Value::Null;
+        t["p_value"] = json!(0.5);
+        t["statistic"] = json!(0.0);
+    });
+    let e = audit_verify(&forged_rank, &registry).unwrap_err();
+    assert_eq!(
+        e.field,
+        format!("result.implementations[0].checks[{rank}].tests")
+    );
+    assert!(e.to_string().contains("does not apply"), "{e}");
 }

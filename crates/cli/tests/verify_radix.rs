@@ -1,0 +1,145 @@
+//! `verify` in bases that are not powers of two: the base-b C examples over version 2 of the
+//! protocol (base-b digit integers) and the built-in base-b oracle. A true Owen scramble passes
+//! in bases 3 and 5; a random shift per node fails `owen` at the root and passes its own claim;
+//! the per-digit permutation of scrambled Halton fails the joint laws. Every certificate passes
+//! its own audit.
+
+use crate::support::{build_c_example, gartowen};
+use serde_json::Value;
+
+/// Runs `verify ARGS… --json` and returns (exit code, stderr, the first implementation's
+/// report), after checking the certificate passes `certificate check`.
+fn verify(args: &[&str], dir: &std::path::Path) -> (Option<i32>, String, Value) {
+    let cert = dir.join("cert.json");
+    let _ = std::fs::remove_file(&cert);
+    let mut all = vec!["verify"];
+    all.extend_from_slice(args);
+    all.extend_from_slice(&["--json", cert.to_str().unwrap()]);
+    let o = gartowen(&all);
+    let err = String::from_utf8_lossy(&o.stderr).to_string();
+    let v: Value = serde_json::from_slice(&std::fs::read(&cert).unwrap())
+        .unwrap_or_else(|e| panic!("{e}: {err}"));
+    let audit = gartowen(&["certificate", "check", cert.to_str().unwrap()]);
+    assert_eq!(
+        audit.status.code(),
+        Some(0),
+        "{}{}",
+        String::from_utf8_lossy(&audit.stdout),
+        String::from_utf8_lossy(&audit.stderr)
+    );
+    (
+        o.status.code(),
+        err,
+        v["result"]["implementations"][0].clone(),
+    )
+}
+
+/// The verdict of every check, by name.
+fn verdicts(report: &Value) -> Vec<(String, String)> {
+    report["checks"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| {
+            (
+                c["check"].as_str().unwrap().into(),
+                c["verdict"].as_str().unwrap().into(),
+            )
+        })
+        .collect()
+}
+
+/// Every check passes but `fails`; nets are skipped, flip-rank is not run.
+fn assert_verdicts(report: &Value, fails: &[&str]) {
+    for (check, verdict) in verdicts(report) {
+        let want = match check.as_str() {
+            "nets" => "skipped",
+            "flip-rank" => "not-run",
+            c if fails.contains(&c) => "fail",
+            _ => "pass",
+        };
+        assert_eq!(verdict, want, "{check}: {report}");
+    }
+}
+
+#[test]
+fn base_3_and_5_owen_pass_and_the_imitations_fail_the_documented_laws() {
+    let dir = tempfile::tempdir().unwrap();
+    let owen = build_c_example(dir.path(), "owen_radix", &[]);
+    let cyclic = build_c_example(dir.path(), "cyclic_shift_radix", &[]);
+    let halton = build_c_example(dir.path(), "halton_permutation", &[]);
+    for base in ["3", "5"] {
+        let (code, err, r) = verify(&["--external", &owen, "--base", base], dir.path());
+        assert_eq!(code, Some(0), "{err}");
+        assert_eq!(r["base"], base.parse::<u32>().unwrap());
+        assert_verdicts(&r, &[]);
+    }
+    let (code, _, r) = verify(&["--external", &cyclic, "--base", "3"], dir.path());
+    assert_eq!(code, Some(1));
+    assert_verdicts(&r, &["node-law", "pair-lemma"]);
+    let node_law = r["checks"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["check"] == "node-law");
+    let detail = node_law.unwrap()["detail"].as_str().unwrap();
+    assert!(
+        detail.contains("depth 0") && detail.contains("S_3"),
+        "{detail}"
+    );
+    let own = [
+        "--external",
+        &cyclic,
+        "--base",
+        "3",
+        "--claim",
+        "independent:cyclic",
+    ];
+    let (code, _, r) = verify(&own, dir.path());
+    assert_eq!(code, Some(0));
+    assert_verdicts(&r, &[]);
+    let (code, _, r) = verify(&["--external", &halton, "--base", "3"], dir.path());
+    assert_eq!(code, Some(1));
+    assert_verdicts(&r, &["pair-law", "collisions", "pair-lemma"]);
+}
+
+#[test]
+fn a_version_1_program_asked_for_base_3_fails_naming_the_version_and_bad_bases_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let binary = build_c_example(dir.path(), "owen_nested", &[]);
+    let o = gartowen(&["verify", "--external", &binary, "--base", "3"]);
+    assert_eq!(o.status.code(), Some(3));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("unsupported request (version 2"), "{err}");
+    for (args, says) in [
+        (vec!["--base", "1"], "--base 1"),
+        (vec!["--base", "512"], "--base 512"),
+        (
+            vec!["--base", "3", "--claim", "marginal:affine"],
+            "in base 3",
+        ),
+        (
+            vec!["--base", "3", "--expect", "art-owen-2"],
+            "--expect art-owen-2",
+        ),
+    ] {
+        let mut all = vec!["verify", "--external", &binary];
+        all.extend_from_slice(&args);
+        let o = gartowen(&all);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains(says), "{args:?}: {err}");
+    }
+}
+
+#[test]
+fn the_built_in_base_3_oracle_passes_and_its_per_depth_mutant_fails_the_pair_law() {
+    let dir = tempfile::tempdir().unwrap();
+    let (code, _, r) = verify(&["--impl", "owen-oracle:base=3"], dir.path());
+    assert_eq!(code, Some(0));
+    assert_verdicts(&r, &[]);
+    let per_depth = ["--impl", "owen-oracle:per-depth:base=3", "--claim", "owen"];
+    let (code, _, r) = verify(&per_depth, dir.path());
+    assert_eq!(code, Some(1));
+    assert_verdicts(&r, &["pair-law", "collisions", "pair-lemma"]);
+}
