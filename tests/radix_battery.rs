@@ -2,7 +2,7 @@
 //! imitations users run (random shifts per node, one permutation per depth as in scrambled
 //! Halton) fail the named laws; the laws' false-alarm rate on the oracle agrees with the level.
 
-use gartowen::battery::radix_candidate::RadixWords;
+use gartowen::battery::radix_words::RadixWords;
 use gartowen::core::{Claim, Radix, RadixLayout, RadixScrambler, Width};
 use gartowen::verify::{
     check_candidate, judge_families, law_runner::run_laws, registry_candidate, verify_shard,

@@ -1,8 +1,12 @@
 //! The implementations the battery judges, however they are reached: registry entries,
 //! external programs, or any in-process builder of instances per seed.
 
+use crate::radix_words::RadixWords;
 use crate::sampling::{ManySeeds, SeedBuilder};
-use gartowen_core::{BuildContext, Claim, CoreError, PowerOfTwoBase, Radix, Registry, Scrambler};
+use gartowen_core::{
+    BuildContext, Claim, CoreError, PowerOfTwoBase, Radix, RadixScrambler, Registry, Scrambler,
+};
+use gartowen_owen::registry::build_radix;
 
 /// One implementation as the battery sees it, however it is reached (registry or external).
 pub struct Candidate<'a> {
@@ -26,7 +30,7 @@ pub struct Candidate<'a> {
     /// that need one say "not run". `None`: every dimension.
     pub max_dims: Option<u32>,
     /// Its base when that is not a power of two: words are base-b digit integers, the probe
-    /// and instances are [`crate::radix_candidate::RadixWords`]. `None`: base 2^q, the
+    /// and instances are [`RadixWords`]. `None`: base 2^q, the
     /// probe's [`Scrambler::base`].
     pub radix: Option<Radix>,
 }
@@ -81,14 +85,14 @@ pub fn registry_seeds<'a>(
 
 /// The candidate for registry entry `request` at position `index` (a request whose
 /// `:base=B` is not a power of two is the built-in of that base: see
-/// [`crate::radix_candidate::radix_candidate`]).
+/// [`radix_candidate`]).
 pub fn registry_candidate<'a>(
     registry: &'a Registry,
     request: &'a str,
     index: usize,
 ) -> Result<Candidate<'a>, CoreError> {
     if let Some(radix) = gartowen_owen::registry::requested_radix(request, 2)? {
-        return crate::radix_candidate::radix_candidate(request, radix, index);
+        return radix_candidate(request, radix, index);
     }
     let probe = registry.build(request, 0)?;
     let base = probe.base();
@@ -129,7 +133,6 @@ pub fn external_candidate<'a>(
     twin: Option<(&'a Registry, &'a str)>,
 ) -> Candidate<'a> {
     use crate::external::{ExternalRadixScrambler, ExternalScrambler};
-    use crate::radix_candidate::RadixWords;
     let base = process.base();
     let radix = base.radix();
     let for_seed = process.clone();
@@ -151,7 +154,7 @@ pub fn external_candidate<'a>(
         health: Box::new(move || watched.failure().map(|e| e.to_string())),
         twin: twin.map(|(registry, request)| {
             let seeds = match radix {
-                Some(r) => crate::radix_candidate::radix_seeds(request, r),
+                Some(r) => radix_seeds(request, r),
                 None => registry_seeds(registry, request, base.power_of_two().expect("2^q")),
             };
             (request.to_string(), seeds)
@@ -159,4 +162,36 @@ pub fn external_candidate<'a>(
         max_dims: None,
         radix,
     }
+}
+
+/// The candidate for the built-in `request` in base `radix` (see
+/// [`gartowen_owen::registry::build_radix`]) at position `index`.
+pub fn radix_candidate<'a>(
+    request: &str,
+    radix: Radix,
+    index: usize,
+) -> Result<Candidate<'a>, CoreError> {
+    let probe = build_radix(request, radix, 0)?;
+    Ok(Candidate {
+        index,
+        name: probe.name(),
+        claim: probe.claim(),
+        probe: Box::new(RadixWords(Box::new(probe))),
+        with_seed: radix_seeds(request, radix),
+        many: None,
+        health: Box::new(|| None),
+        twin: None,
+        max_dims: None,
+        radix: Some(radix),
+    })
+}
+
+/// Instances of the built-in `request` in base `radix` for any seed (an external program's
+/// `--expect` twin in that base).
+pub fn radix_seeds<'a>(request: &str, radix: Radix) -> Box<SeedBuilder<'a>> {
+    let request = request.to_string();
+    Box::new(move |seed| {
+        let s = build_radix(&request, radix, seed).map_err(|e| e.to_string())?;
+        Ok(Box::new(RadixWords(Box::new(s))) as Box<dyn Scrambler>)
+    })
 }

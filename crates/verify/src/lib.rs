@@ -37,7 +37,7 @@ pub mod nets;
 pub mod owen_equivalence;
 pub mod pair_law;
 pub mod pair_lemma;
-pub mod radix_candidate;
+pub mod radix_words;
 pub mod sampling;
 pub mod stats;
 pub mod structure;

@@ -19,7 +19,7 @@
 use crate::candidate::Candidate;
 use crate::family::usable_dims;
 use crate::level::LevelPlan;
-use crate::radix_candidate::radix_tree;
+use crate::radix_words::radix_tree;
 use crate::sampling::SeedBuilder;
 use crate::sampling::Tree;
 use crate::verdict::Outcome;

@@ -1,18 +1,16 @@
-//! Candidates in a base that is not a power of two (3, 5, 6, 7, …): the battery reaches them
-//! through [`RadixWords`], and every check reads their digits through [`radix_tree`].
+//! Scramblers in a base that is not a power of two (3, 5, 6, 7, …) as the battery reaches
+//! them: through [`RadixWords`], their digits read through [`radix_tree`].
 
-use crate::candidate::Candidate;
-use crate::sampling::{SeedBuilder, Tree};
+use crate::sampling::Tree;
 use gartowen_core::{
     Claim, CoreError, PowerOfTwoBase, Radix, RadixLayout, RadixScrambler, Scrambler, Unscramble,
     Width,
 };
-use gartowen_owen::registry::build_radix;
 
 /// A base-b scrambler as a map of words, for the battery's shared machinery (evaluation
 /// passes, the `function` and `expect` comparisons). The words are base-b digit integers;
 /// [`Scrambler::base`] answers base 2 only because the trait needs a power of two: no check
-/// of a candidate with [`Candidate::radix`] set reads it.
+/// of a candidate with [`crate::candidate::Candidate::radix`] set reads it.
 pub struct RadixWords(pub Box<dyn RadixScrambler>);
 
 impl Scrambler for RadixWords {
@@ -53,36 +51,4 @@ impl Unscramble for RadixWords {
 /// The tree of `width`-bit words in base `radix`.
 pub fn radix_tree(radix: Radix, width: Width) -> Result<Tree, CoreError> {
     Ok(Tree::radix(RadixLayout::new(width, radix)?))
-}
-
-/// The candidate for the built-in `request` in base `radix` (see
-/// [`gartowen_owen::registry::build_radix`]) at position `index`.
-pub fn radix_candidate<'a>(
-    request: &str,
-    radix: Radix,
-    index: usize,
-) -> Result<Candidate<'a>, CoreError> {
-    let probe = build_radix(request, radix, 0)?;
-    Ok(Candidate {
-        index,
-        name: probe.name(),
-        claim: probe.claim(),
-        probe: Box::new(RadixWords(Box::new(probe))),
-        with_seed: radix_seeds(request, radix),
-        many: None,
-        health: Box::new(|| None),
-        twin: None,
-        max_dims: None,
-        radix: Some(radix),
-    })
-}
-
-/// Instances of the built-in `request` in base `radix` for any seed (an external program's
-/// `--expect` twin in that base).
-pub fn radix_seeds<'a>(request: &str, radix: Radix) -> Box<SeedBuilder<'a>> {
-    let request = request.to_string();
-    Box::new(move |seed| {
-        let s = build_radix(&request, radix, seed).map_err(|e| e.to_string())?;
-        Ok(Box::new(RadixWords(Box::new(s))) as Box<dyn Scrambler>)
-    })
 }
