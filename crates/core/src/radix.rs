@@ -255,6 +255,41 @@ mod tests {
         );
     }
 
+    /// Adds 1 to the last digit mod b: only the required methods.
+    struct LastDigitPlusOne(Radix);
+
+    impl RadixScrambler for LastDigitPlusOne {
+        fn name(&self) -> String {
+            "last-digit-plus-one".into()
+        }
+        fn radix(&self) -> Radix {
+            self.0
+        }
+        fn claim(&self) -> Claim {
+            Claim::NESTED
+        }
+        fn scramble(&self, x: u64, width: Width, _dim: u32) -> u64 {
+            let l = RadixLayout::new(width, self.0).unwrap();
+            let k = l.num_digits() - 1;
+            l.set(x, k, (l.get(x, k) + 1) % self.0.get())
+        }
+    }
+
+    #[test]
+    fn the_batch_default_scrambles_each_word_and_no_inverse_is_offered() {
+        let s = LastDigitPlusOne(Radix::new(3).unwrap());
+        let words: Vec<u64> = vec![0, 1, 2, 5, 3u64.pow(20) - 1];
+        let mut batch = words.clone();
+        s.scramble_batch(&mut batch, Width::W32, 0);
+        let one_by_one: Vec<u64> = words
+            .iter()
+            .map(|&x| s.scramble(x, Width::W32, 0))
+            .collect();
+        assert_eq!(batch, one_by_one);
+        assert_eq!(batch[..3], [1, 2, 0]);
+        assert_eq!(s.unscramble(1, Width::W32, 0), None);
+    }
+
     #[test]
     fn to_f64_truncates_and_is_monotone() {
         let l = RadixLayout::new(Width::W32, Radix::new(7).unwrap()).unwrap();
