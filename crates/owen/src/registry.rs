@@ -5,23 +5,31 @@ use crate::{FullTreeOwen, OwenVariant, RadixOwen, RadixVariant};
 use gartowen_core::registry::BuildContext;
 use gartowen_core::{CoreError, PowerOfTwoBase, Radix, Scrambler, ScramblerRequest, ScramblerSpec};
 
+/// The variant flag of `req` among `all` (named by `name`), the first of `all` (uniform) when
+/// none is given; two flags are refused.
+fn one_variant<V: Copy>(
+    req: &ScramblerRequest,
+    all: &[V],
+    name: fn(V) -> &'static str,
+) -> Result<V, CoreError> {
+    let flags: Vec<V> = all.iter().copied().filter(|&v| req.flag(name(v))).collect();
+    match flags.as_slice() {
+        [] => Ok(all[0]),
+        [v] => Ok(*v),
+        _ => Err(CoreError::InvalidOption {
+            scrambler: req.name.clone(),
+            option: "variant".into(),
+            reason: format!(
+                "give at most one of {}",
+                all.iter().map(|&v| name(v)).collect::<Vec<_>>().join(", ")
+            ),
+        }),
+    }
+}
+
 fn build(req: &ScramblerRequest, ctx: &BuildContext) -> Result<Box<dyn Scrambler>, CoreError> {
     req.allow_only(&["uniform", "cyclic", "xor", "affine", "base"])?;
-    let flags: Vec<OwenVariant> = OwenVariant::ALL
-        .into_iter()
-        .filter(|v| req.flag(v.name()))
-        .collect();
-    let variant = match flags.as_slice() {
-        [] => OwenVariant::Uniform,
-        [v] => *v,
-        _ => {
-            return Err(CoreError::InvalidOption {
-                scrambler: req.name.clone(),
-                option: "variant".into(),
-                reason: "give at most one of uniform, cyclic, xor, affine".into(),
-            })
-        }
-    };
+    let variant = one_variant(req, &OwenVariant::ALL, OwenVariant::name)?;
     Ok(Box::new(FullTreeOwen::new(
         req.base_or(ctx.default_base)?,
         variant,
@@ -91,20 +99,52 @@ pub fn build_radix(request: &str, radix: Radix, seed: u64) -> Result<RadixOwen, 
             });
         }
     }
-    let flags: Vec<RadixVariant> = RadixVariant::ALL
-        .into_iter()
-        .filter(|v| req.flag(v.name()))
-        .collect();
-    let variant = match flags.as_slice() {
-        [] => RadixVariant::Uniform,
-        [v] => *v,
-        _ => {
-            return Err(CoreError::InvalidOption {
-                scrambler: req.name.clone(),
-                option: "variant".into(),
-                reason: "give at most one of uniform, cyclic, per-depth".into(),
-            })
-        }
-    };
+    let variant = one_variant(&req, &RadixVariant::ALL, RadixVariant::name)?;
     Ok(RadixOwen::new(radix, variant, seed))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn variants_are_one_flag_and_the_base_must_agree() {
+        let three = Radix::new(3).unwrap();
+        let two = build_radix("owen-oracle:cyclic:per-depth", three, 0).unwrap_err();
+        assert!(two
+            .to_string()
+            .ends_with("give at most one of uniform, cyclic, per-depth"));
+        let base = build_radix("owen-oracle:base=5", three, 0).unwrap_err();
+        assert!(
+            base.to_string().contains("base 5 differs from base 3"),
+            "{base}"
+        );
+        let per_depth = build_radix("owen-oracle:per-depth:base=3", three, 0).unwrap();
+        assert_eq!(per_depth.variant(), RadixVariant::PerDepth);
+        assert_eq!(
+            build_radix("owen-oracle", three, 0).unwrap().variant(),
+            RadixVariant::Uniform
+        );
+        assert_eq!(
+            requested_radix("owen-oracle:base=6", 2).unwrap(),
+            Radix::new(6).ok()
+        );
+        assert_eq!(requested_radix("owen-oracle:base=8", 3).unwrap(), None);
+        assert_eq!(
+            requested_radix("owen-oracle", 7).unwrap(),
+            Radix::new(7).ok()
+        );
+        assert!(requested_radix("owen-oracle:base=x", 2).is_err());
+        assert!(requested_radix("owen-oracle:base=1", 2).is_err());
+        let ctx = BuildContext {
+            seed: 0,
+            default_base: PowerOfTwoBase::B2,
+        };
+        let req = ScramblerRequest::parse("owen-oracle:xor:affine").unwrap();
+        let e = build(&req, &ctx).err().unwrap().to_string();
+        assert!(
+            e.ends_with("give at most one of uniform, cyclic, xor, affine"),
+            "{e}"
+        );
+    }
 }
