@@ -300,3 +300,78 @@ mod tests {
         );
     }
 }
+
+#[cfg(test)]
+mod golden {
+    use super::*;
+
+    /// Scrambles of fixed words, per variant and base: they freeze the keying, so a change of
+    /// any node key (seed, dimension, depth or digit) shows here.
+    fn outputs(b: u64, v: RadixVariant) -> Vec<u64> {
+        let s = RadixOwen::new(Radix::new(b).unwrap(), v, 0x5EED);
+        let n = RadixLayout::new(Width::W32, Radix::new(b).unwrap())
+            .unwrap()
+            .capacity();
+        [0, 1, n / 3, n / 2, n - 1]
+            .iter()
+            .flat_map(|&x| [s.scramble(x, Width::W32, 0), s.scramble(x, Width::W32, 5)])
+            .collect()
+    }
+
+    #[test]
+    fn scrambles_of_fixed_words_are_frozen() {
+        let want: [(u64, RadixVariant, [u64; 10]); 6] = [
+            (
+                3,
+                RadixVariant::Uniform,
+                [
+                    0x9bca9cb7, 0x23f58860, 0x9bca9cb9, 0x23f5885f, 0x44b582b7, 0x7667aae7,
+                    0x1c8e6cf5, 0x725fe4ab, 0x56d41145, 0x8c9a47b2,
+                ],
+            ),
+            (
+                3,
+                RadixVariant::Cyclic,
+                [
+                    0x69c2363e, 0x9b35eb13, 0x69c2363f, 0x9b35eb14, 0x8b4bd4da, 0xdca5062,
+                    0xb82aaa1c, 0x21d79cef, 0x3bee0dfd, 0x890cb499,
+                ],
+            ),
+            (
+                3,
+                RadixVariant::PerDepth,
+                [
+                    0x9bca9cb7, 0x23f58860, 0x9bca9cb9, 0x23f5885f, 0x113d3501, 0x693c3c3b,
+                    0x32315663, 0x7892b5e5, 0x69c2363e, 0x9b35eb13,
+                ],
+            ),
+            (
+                5,
+                RadixVariant::Uniform,
+                [
+                    0x3795c300, 0x1e32fad6, 0x3795c2fe, 0x1e32fad5, 0xf26f9d9, 0x383f7111,
+                    0x40eca8b5, 0x407b7b8d, 0x27638978, 0x176402ca,
+                ],
+            ),
+            (
+                5,
+                RadixVariant::Cyclic,
+                [
+                    0x1e24f480, 0x12bcbd75, 0x1e24f481, 0x12bcbd76, 0x2d7c52fc, 0x2aef06c2,
+                    0x4282f67d, 0x31adde3c, 0x1532f8cd, 0x8b2a8e8,
+                ],
+            ),
+            (
+                5,
+                RadixVariant::PerDepth,
+                [
+                    0x3795c300, 0x1e32fad6, 0x3795c2fe, 0x1e32fad5, 0x19ae9333, 0x33ee1c47,
+                    0x41ecccf1, 0x462954ec, 0x1e24f480, 0x12bcbd75,
+                ],
+            ),
+        ];
+        for (b, v, words) in want {
+            assert_eq!(outputs(b, v), words, "base {b} {v:?}");
+        }
+    }
+}
