@@ -332,7 +332,8 @@ fn external_programs_are_verified_with_a_certificate() {
     let none = dir.path().join("none.json");
     for args in [
         vec!["--width", "16"],
-        vec!["--base", "3"],
+        // Base 3 is served by protocol version 2; 512 is no base at all.
+        vec!["--base", "512"],
         vec!["--expect", "no-such-scrambler"],
         vec!["--expect", "art-owen-16p"],
         vec!["--timeout", "NaN"],
