@@ -23,18 +23,6 @@ pub struct RadixInspection {
     pub first_violation: Option<Violation>,
 }
 
-/// A uniformly random digit integer below b^m.
-fn random_word(layout: RadixLayout, rng: &mut SplitMix64) -> u64 {
-    let n = layout.capacity();
-    let zone = u64::MAX - u64::MAX % n;
-    loop {
-        let r = rng.next_u64();
-        if r < zone {
-            return r % n;
-        }
-    }
-}
-
 /// Inspects `nodes` nodes of the map `f` (scrambling a batch of words in place) from `seed`.
 pub fn inspect_radix_probes(
     f: &dyn Fn(&mut [u64]),
@@ -57,7 +45,7 @@ pub fn inspect_radix_probes(
         let mut probes = Vec::new();
         for probe in first..last {
             let k = (probe % m as u64) as u32;
-            let base_word = random_word(layout, &mut rng);
+            let base_word = layout.random_word(&mut rng);
             probes.push((k, inputs.len()));
             for d in 0..b {
                 for _tail in 0..2 {

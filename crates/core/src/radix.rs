@@ -133,6 +133,18 @@ impl RadixLayout {
         x - self.get(x, k) as u64 * place + d as u64 * place
     }
 
+    /// A uniformly random word below b^m (rejection keeps every word equally likely).
+    pub fn random_word(self, rng: &mut crate::SplitMix64) -> u64 {
+        let n = self.capacity();
+        let zone = u64::MAX - u64::MAX % n;
+        loop {
+            let r = rng.next_u64();
+            if r < zone {
+                return r % n;
+            }
+        }
+    }
+
     /// Checks that `word` is below b^m.
     pub fn check(self, word: u64) -> Result<u64, CoreError> {
         if word < self.capacity() {

@@ -261,17 +261,7 @@ impl Tree {
     pub fn random_word(&self, rng: &mut SplitMix64) -> u64 {
         match self.digits {
             TreeDigits::PowerOfTwo(l) => rng.next_u64() & l.width().mask(),
-            TreeDigits::Radix(l) => {
-                // Rejection keeps every word equally likely.
-                let n = l.capacity();
-                let zone = u64::MAX - u64::MAX % n;
-                loop {
-                    let r = rng.next_u64();
-                    if r < zone {
-                        return r % n;
-                    }
-                }
-            }
+            TreeDigits::Radix(l) => l.random_word(rng),
         }
     }
 
