@@ -16,11 +16,10 @@ fn verdicts(r: &ImplReport) -> Vec<(&str, Verdict)> {
         .collect()
 }
 
-/// Every check passes except `fails`; nets are skipped and flip-rank does not apply.
+/// Every check passes except `fails`; flip-rank does not apply.
 fn assert_only_failures(r: &ImplReport, fails: &[&str]) {
     for (check, verdict) in verdicts(r) {
         let want = match check {
-            "nets" => Verdict::Skipped,
             "flip-rank" => Verdict::NotRun,
             c if fails.contains(&c) => Verdict::Fail,
             _ => Verdict::Pass,
@@ -77,6 +76,25 @@ fn owen_in_bases_3_5_and_7_passes_and_imitations_claiming_owen_fail_the_named_la
         cyclic.detail.contains("depth 0") && cyclic.detail.contains("S_3"),
         "{}",
         cyclic.detail
+    );
+    // Nets in the scrambler's own base: Faure in a prime base, Hammersley otherwise.
+    let nets = |r: &ImplReport| {
+        r.checks
+            .iter()
+            .find(|c| c.check == "nets")
+            .unwrap()
+            .detail
+            .clone()
+    };
+    assert!(
+        nets(&reports[0]).contains("faure:base=3 dims [0, 1, 2] m ≤ 7"),
+        "{}",
+        nets(&reports[0])
+    );
+    assert!(
+        nets(&reports[5]).contains("hammersley:base=6 dims [0, 1] m ≤ 4"),
+        "{}",
+        nets(&reports[5])
     );
     let not_applicable = &reports[0]
         .checks

@@ -90,8 +90,14 @@ pub fn halton(count: u64, dims: usize) -> Result<Vec<Fraction>, SeqError> {
         .collect())
 }
 
-/// Whether `p` is prime (trial division; p is small).
-fn is_prime(p: u64) -> bool {
+/// Whether `p` is prime (trial division: meant for bases, p below about 2^40).
+///
+/// ```
+/// use gartowen_seq::radix::is_prime;
+/// assert!(is_prime(2) && is_prime(3) && is_prime(65521));
+/// assert!(!is_prime(0) && !is_prime(1) && !is_prime(9) && !is_prime(65535));
+/// ```
+pub fn is_prime(p: u64) -> bool {
     p >= 2
         && (2..)
             .take_while(|d| d * d <= p)

@@ -37,6 +37,7 @@ pub mod nets;
 pub mod owen_equivalence;
 pub mod pair_law;
 pub mod pair_lemma;
+pub mod radix_nets;
 pub mod radix_words;
 pub mod sampling;
 pub mod stats;

@@ -86,15 +86,12 @@ pub const STRUCTURE_CHECKS: [StructureCheck; 6] = [
     },
     StructureCheck {
         name: "nets",
-        what: "nets in the scrambler's base and every base it is nested in keep their t-values",
+        what: "nets in the scrambler's base and every base it is nested in keep their t-values (Faure or Hammersley nets in a base b that is not 2^q)",
         stage: Stage::BeforeLaws,
         applies: |_| true,
         run: |c, plan| match c.radix {
             None => check_nets(c.probe.as_ref(), plan, c.max_dims),
-            Some(radix) => Outcome::skipped(format!(
-                "nets are checked in bases 2^q only, not yet in base {}",
-                radix.get()
-            )),
+            Some(radix) => check_radix_nets(c.probe.as_ref(), radix, plan, c.max_dims),
         },
     },
     StructureCheck {
@@ -325,6 +322,22 @@ fn check_nets(s: &dyn Scrambler, plan: &LevelPlan, max_dims: Option<u32>) -> Out
         return Outcome::skipped("neither 32- nor 64-bit words");
     }
     let (verdict, detail) = crate::nets::check_nets(s, width, plan.level, max_dims);
+    Outcome {
+        verdict,
+        detail,
+        value: None,
+    }
+}
+
+fn check_radix_nets(
+    s: &dyn Scrambler,
+    radix: Radix,
+    plan: &LevelPlan,
+    max_dims: Option<u32>,
+) -> Outcome {
+    let width = working_width(s);
+    let (verdict, detail) =
+        crate::radix_nets::check_radix_nets(s, width, radix, plan.level, max_dims);
     Outcome {
         verdict,
         detail,

@@ -439,8 +439,7 @@ fn audit_report(
         }
         let allowed: &[Verdict] = match c.check.as_str() {
             "nested" if want.nested_may_skip => &[Verdict::Skipped],
-            // Nets and the equivalence estimators are defined in bases 2^q.
-            "nets" if radix => &[Verdict::Skipped],
+            // The equivalence estimators are defined in bases 2^q.
             "equivalent-to-owen" if radix => &[Verdict::NotRun],
             // Its estimators read dimensions 0 and 1.
             "equivalent-to-owen" if want.max_dims.is_some_and(|n| n < 2) => &[Verdict::NotRun],

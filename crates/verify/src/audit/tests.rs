@@ -256,7 +256,7 @@ fn the_whole_run_must_hold_every_implementation_and_the_judged_count() {
 }
 
 #[test]
-fn in_base_3_nets_must_be_skipped_and_flip_rank_must_not_run() {
+fn in_base_3_nets_must_run_and_flip_rank_must_not() {
     let registry = registry();
     let c = certificate_of(&registry, &["owen-oracle:base=3"]);
     let run = audit_verify(&c, &registry).unwrap();
@@ -264,10 +264,15 @@ fn in_base_3_nets_must_be_skipped_and_flip_rank_must_not_run() {
     let nets = check_at(&c, 0, "nets");
     let rank = check_at(&c, 0, "flip-rank");
     let at = |i: usize| format!("/result/implementations/0/checks/{i}");
-    let forged_pass = edited(&c, |v| {
-        *v.pointer_mut(&format!("{}/verdict", at(nets))).unwrap() = json!("pass")
+    let as_json = serde_json::to_value(&c).unwrap();
+    assert_eq!(
+        as_json.pointer(&format!("{}/verdict", at(nets))),
+        Some(&json!("pass"))
+    );
+    let forged_skip = edited(&c, |v| {
+        *v.pointer_mut(&format!("{}/verdict", at(nets))).unwrap() = json!("skipped")
     });
-    let e = audit_verify(&forged_pass, &registry).unwrap_err();
+    let e = audit_verify(&forged_skip, &registry).unwrap_err();
     assert_eq!(
         e.field,
         format!("result.implementations[0].checks[{nets}].verdict")
