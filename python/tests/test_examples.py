@@ -1,5 +1,6 @@
 """The Python examples of docs/python.md and examples/python/verify_my_scrambler.py run as documented."""
 
+import json
 import pathlib
 import re
 import subprocess
@@ -44,3 +45,27 @@ def test_the_front_readme_python_example_prints_what_its_comment_says(capsys):
     assert re.search(r"# (\d+): still a \(\1,", block), "the comment states a t-value"
     t = re.search(r"# (\d+): still", block).group(1)
     assert printed == [t]
+
+
+def _verify_external_radix(cli, tmp_path, *flags):
+    """`gartowen verify --external "python owen_radix.py FLAGS" --base 3`: exit code and checks."""
+    program = REPO / "examples" / "external" / "owen_radix.py"
+    command = " ".join([sys.executable, str(program), *flags])
+    out = tmp_path / "verify.json"
+    code, _, err = cli.run("verify", "--external", command, "--base", "3", "--json", out)
+    implementation = json.loads(out.read_text())["result"]["implementations"][0]
+    return code, err, {c["check"]: c["verdict"] for c in implementation["checks"]}
+
+
+def test_the_python_base_3_owen_program_passes_and_its_per_depth_variant_fails_the_joint_laws(
+    cli, tmp_path
+):
+    code, err, verdicts = _verify_external_radix(cli, tmp_path)
+    assert code == 0, err
+    assert verdicts.pop("flip-rank") == "not-run"
+    assert set(verdicts.values()) == {"pass"}, verdicts
+    assert "nets" in verdicts and "pair-law" in verdicts
+    code, err, verdicts = _verify_external_radix(cli, tmp_path, "--per-depth")
+    assert code == 1, err
+    failed = {check for check, verdict in verdicts.items() if verdict == "fail"}
+    assert failed == {"pair-law", "collisions", "pair-lemma"}, verdicts
