@@ -52,7 +52,7 @@ def scramble(words, base, width, dim, seed, per_depth):
     place = base ** (m - 1)
     for depth in range(m):
         digit = (x // np.uint64(place)) % b
-        node = mix64(dim_key + np.uint64(depth + 1) * np.uint64(0x9E3779B97F4A7C15))
+        node = mix64(dim_key + np.array([depth + 1], dtype=np.uint64) * np.uint64(0x9E3779B97F4A7C15))
         if not per_depth:
             node = mix64(node ^ mix64(prefix + np.uint64(0x632BE59BD9B4E019)))
         # keys[i, d]: the key of digit d at word i's node; the image of d is its rank.

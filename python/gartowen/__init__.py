@@ -507,7 +507,10 @@ def verify(
 
     Args:
         fn: the scrambler.
-        base: its scrambling base, a power of two 2..256.
+        base: its scrambling base: a power of two 2..256 (binary words, value word·2^-W), or
+            any other base 3..65535, whose words are integers below b^m (m base-b digits, the
+            most with b^m ≤ 2^width, most significant first; value word·b^-m). Base 3 in
+            32-bit words: 20 digits, words below 3^20. ``flip-rank`` is not applicable there.
         width: 32 or 64.
         level: ``"quick"``, ``"full"`` or ``"exhaustive"``.
         claims: what it claims: ``"owen"``, ``"nested"``, ``"marginal[:GROUP]"`` or
@@ -523,7 +526,7 @@ def verify(
     """
     if not callable(fn):
         raise TypeError(f"fn must be callable, not {type(fn).__name__}")
-    base = _integer("base", base, 2, 256)
+    base = _integer("base", base, 2, 65535)
     width = _integer("width", width)
     level = _string("level", level)
     claims = _string("claims", claims)

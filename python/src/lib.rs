@@ -7,14 +7,15 @@ mod python_scrambler;
 
 use arrays::{read_points, to_array, Element};
 use gartowen::certificate::{CertVerdict, Certificate, InputRecord};
-use gartowen::core::{BuildContext, Claim, PowerOfTwoBase, Scrambler};
+use gartowen::core::{BuildContext, Claim, PowerOfTwoBase, Radix, Scrambler};
 use gartowen::discrepancy::choice::MethodChoice;
 use gartowen::discrepancy::{Kind, Points};
 use gartowen::generate::{GeneratePlan, GenerateRequest, PointCount, PointOrder, RequestError};
 use gartowen::net_check::{check_points, NetQuery, Silent};
 use gartowen::netcheck::CheckBase;
+use gartowen::owen::registry::build_radix;
 use gartowen::reports::{discrepancy_pairs, timed_discrepancy};
-use gartowen::verify::{check_candidate, registry_seeds, Candidate, Level};
+use gartowen::verify::{check_candidate, radix_seeds, registry_seeds, Candidate, Level};
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use serde_json::json;
@@ -284,8 +285,14 @@ fn verify(
     expect: Option<String>,
     batch_seeds: bool,
 ) -> PyResult<(String, u64, u64, f64, f64)> {
-    let base_value = PowerOfTwoBase::from_base(base)
-        .map_err(|e| PyValueError::new_err(format!("base {base}: {e}")))?;
+    // A base 2^q keeps binary words; any other base b ≥ 3 passes base-b digit integers.
+    let (base_value, radix) = match PowerOfTwoBase::from_base(base) {
+        Ok(b) => (b, None),
+        Err(_) => match Radix::new(base) {
+            Ok(r) => (PowerOfTwoBase::B2, Some(r)),
+            Err(e) => return Err(PyValueError::new_err(format!("base {base}: {e}"))),
+        },
+    };
     let width_value = match width {
         32 => gartowen::core::Width::W32,
         64 => gartowen::core::Width::W64,
@@ -298,9 +305,14 @@ fn verify(
     let level_value: Level = level
         .parse()
         .map_err(|e| PyValueError::new_err(format!("{e}")))?;
-    let claim_value = Claim::parse(claim).map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let claim_value = Claim::parse(claim)
+        .and_then(|c| c.in_base(base as u32))
+        .map_err(|e| PyValueError::new_err(e.to_string()))?;
     let registry = gartowen::registry();
-    if let Some(twin) = &expect {
+    if let (Some(twin), Some(r)) = (&expect, radix) {
+        build_radix(twin, r, 0)
+            .map_err(|e| PyValueError::new_err(format!("expect {twin}: {e}")))?;
+    } else if let Some(twin) = &expect {
         let s = registry
             .build_with(
                 twin,
@@ -345,11 +357,13 @@ fn verify(
                 Ok(many.call_many(words, dim, first, count))
             }));
         }
+        candidate.radix = radix;
         candidate.twin = expect.as_deref().map(|twin| {
-            (
-                twin.to_string(),
-                registry_seeds(&registry, twin, base_value),
-            )
+            let seeds = match radix {
+                Some(r) => radix_seeds(twin, r),
+                None => registry_seeds(&registry, twin, base_value),
+            };
+            (twin.to_string(), seeds)
         });
         Ok::<_, String>(check_candidate(&candidate, level_value, 1))
     });

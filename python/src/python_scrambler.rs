@@ -215,7 +215,8 @@ pub struct PythonScrambler {
     pub function: Arc<PythonFunction>,
     /// The seed passed to every call.
     pub seed: u64,
-    /// The scrambling base.
+    /// The scrambling base (base 2 when the candidate's base is not a power of two: the
+    /// battery then reads the words as base-b digit integers and never asks this).
     pub base: PowerOfTwoBase,
     /// What the function claims.
     pub claim: Claim,

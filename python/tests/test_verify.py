@@ -6,7 +6,10 @@ The battery's family-wise false-alarm rate is 1e-3 (Bonferroni over sub-tests); 
 fixed, so each verdict is deterministic.
 """
 
+import pathlib
+
 import numpy as np
+
 import pytest
 
 import gartowen
@@ -130,7 +133,10 @@ def test_words_and_arguments_the_function_gets():
 @pytest.mark.parametrize(
     "kwargs,exc,fragment",
     [
-        (dict(base=3, width=32), ValueError, "base"),
+        (dict(base=512, width=32), ValueError, "base"),
+        (dict(base=65536, width=32), ValueError, "base"),
+        (dict(base=3, width=32, claims="marginal:affine"), ValueError, "base 3"),
+        (dict(base=3, width=32, expect="art-owen-2"), ValueError, "art-owen-2"),
         (dict(base=2, width=16), ValueError, "width 16"),
         (dict(base=2, width=32, level="slow"), ValueError, "unknown level 'slow'; use quick, full or exhaustive"),
         (dict(base=2, width=32, claims="random"), ValueError, "unknown claim 'random'"),
@@ -153,3 +159,32 @@ def test_list_scramblers_equals_the_cli(cli):
     assert listed == doc
     names = {s["name"] for s in listed}
     assert {"owen-oracle", "art-owen-2", "owen-per-bit-hash", "digital-shift"} <= names
+
+
+def _radix_example():
+    """examples/external/owen_radix.py as a module: its NumPy base-b Owen scramble."""
+    import importlib.util
+
+    path = pathlib.Path(__file__).resolve().parents[2] / "examples" / "external" / "owen_radix.py"
+    spec = importlib.util.spec_from_file_location("owen_radix", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_a_base_3_function_gets_digit_words_passes_as_owen_and_equals_its_twin_nowhere():
+    owen_radix = _radix_example()
+    seen = set()
+
+    def base3(words, dim, seed):
+        seen.add(int(words.max()) < 3**20)
+        return owen_radix.scramble(words, 3, 32, dim, seed, per_depth=False).astype(np.uint32)
+
+    r = gartowen.verify(base3, 3, 32)
+    assert r.passed, r.failures
+    verdicts = {c["check"]: c["verdict"] for c in r.report["checks"]}
+    assert verdicts["flip-rank"] == "not-run" and verdicts["nets"] == "pass"
+    assert r.report["base"] == 3 and seen == {True}
+    # The function is an Owen scramble, keyed otherwise than the built-in oracle.
+    r = gartowen.verify(base3, 3, 32, expect="owen-oracle")
+    assert [c["check"] for c in r.failures] == ["expect"]
