@@ -18,6 +18,7 @@ pub use gartowen_verify::{audit, certificate, external, external_pool, word_swee
 pub mod generate;
 pub mod net_check;
 pub mod point_files;
+pub mod radix_points;
 pub mod reports;
 pub mod testing;
 

@@ -11,6 +11,7 @@ mod discrepancy;
 mod generate;
 mod junit;
 mod oracle;
+mod radix_points;
 mod readme;
 mod report;
 mod scene;

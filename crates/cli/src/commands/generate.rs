@@ -4,8 +4,9 @@ use super::width_from_bits;
 use crate::output::{io_err, write_atomically};
 use crate::CliError;
 use clap::{Args, ValueEnum};
-use gartowen::core::{word_to_f64, Width};
+use gartowen::core::{word_to_f64, RadixLayout, Width};
 use gartowen::generate::{GeneratePlan, GenerateRequest, PointCount, PointOrder};
+use gartowen::radix_points::{self, RadixPoints};
 use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -38,12 +39,15 @@ pub enum OrderArg {
 ///   gartowen generate --seq sobol --dims 3 --n 8 --order gray --format csv   (scipy's rows)
 ///   gartowen generate --seq sz16 --dims 16 --log2-n 8 --scramble owen-oracle --seed 7
 ///   gartowen generate --seq sobol --dims 2 --log2-n 8 --scramble owen-oracle:xor --scramble-base 4
+///   gartowen generate --seq faure:base=3 --dims 3 --n 243 --scramble owen-oracle --seed 1
 #[derive(Args, Debug)]
 #[command(verbatim_doc_comment)]
 pub struct GenerateArgs {
     /// Sequence: sobol (base 2, Joe–Kuo 6.21201, 21201 dims), sz4 (base 4, 4 dims), sz16 (base 16,
-    /// 16 dims), faure:base=B (B = 2, 4, …, 256; B dims, a (0,B)-sequence over GF(B)) or
-    /// faure-net:base=B:m=M (the (0,M,B+1)-net of its first B^M points).
+    /// 16 dims), faure:base=B (B = 2, 4, …, 256; B dims, a (0,B)-sequence over GF(B); or B a
+    /// prime other than 2: the (0,B)-sequence of Pascal matrices mod B, held as base-B digit
+    /// words and scrambled in base B) or faure-net:base=B:m=M (the (0,M,B+1)-net of its first
+    /// B^M points).
     #[arg(long)]
     pub seq: String,
     /// Number of dimensions.
@@ -77,8 +81,9 @@ pub struct GenerateArgs {
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
     /// Scrambling base for scramblers whose base is a parameter (default: the sequence's own:
-    /// sobol 2, sz4 4, sz16 16). A base the scrambler does not take (a fixed base, or its
-    /// `:base=B` option) is refused.
+    /// sobol 2, sz4 4, sz16 16, faure:base=3 3). A base the scrambler does not take (a fixed
+    /// base, or its `:base=B` option) is refused; a base that is not a power of two needs a
+    /// sequence of that base.
     #[arg(long = "scramble-base")]
     pub scramble_base: Option<u64>,
     /// Output file (default: standard output). Written atomically.
@@ -130,6 +135,9 @@ fn block_rows(dims: usize) -> u64 {
 pub struct RowSource<'a> {
     /// Word width of the rows.
     pub width: Width,
+    /// How words hold values: `None` binary (value word·2^-W), else base-b digit words
+    /// (value word·b^-m).
+    pub radix: Option<RadixLayout>,
     /// Coordinates per point.
     pub dims: usize,
     /// Number of points.
@@ -139,6 +147,14 @@ pub struct RowSource<'a> {
 }
 
 impl RowSource<'_> {
+    /// The value a word stands for.
+    fn value(&self, x: u64) -> f64 {
+        match self.radix {
+            None => word_to_f64(x, self.width),
+            Some(layout) => layout.to_f64(x),
+        }
+    }
+
     /// Calls `emit` with each block of rows (row-major words) in order.
     fn for_each_block(
         &self,
@@ -174,6 +190,7 @@ fn rows(p: &GeneratePlan, order: OrderArg) -> RowSource<'_> {
     };
     RowSource {
         width: p.width(),
+        radix: None,
         dims: p.seq.dims(),
         count: p.count,
         block: Box::new(move |first, buf| p.block(first, order, buf)),
@@ -262,7 +279,7 @@ pub fn write_npy(src: &RowSource, words: bool, out: &mut dyn Write) -> Result<()
     let width = src.width;
     match (words, width.bits()) {
         (false, _) => write_npy_as(src, out, "<f8", 8, |x, b| {
-            b.copy_from_slice(&word_to_f64(x, width).to_le_bytes())
+            b.copy_from_slice(&src.value(x).to_le_bytes())
         }),
         (true, 32) => write_npy_as(src, out, "<u4", 4, |x, b| {
             b.copy_from_slice(&(x as u32).to_le_bytes())
@@ -298,7 +315,7 @@ pub fn write_text(
             let _ = match (format, words) {
                 (PointFormat::Hex, _) => write!(line, "{x:0hex_digits$x}"),
                 (_, true) => write!(line, "{x}"),
-                (_, false) => write!(line, "{:?}", word_to_f64(x, width)),
+                (_, false) => write!(line, "{:?}", src.value(x)),
             };
         }
         line.push('\n');
@@ -316,9 +333,59 @@ pub fn format_of(path: &std::path::Path) -> Option<PointFormat> {
     }
 }
 
+/// The rows of a base-b point set: its digit words, written as values k·b^-m or as words.
+pub fn radix_rows(p: &RadixPoints) -> RowSource<'_> {
+    RowSource {
+        width: p.layout.width(),
+        radix: Some(p.layout),
+        dims: p.columns.len(),
+        count: p.len() as u64,
+        block: Box::new(move |first, buf| {
+            let dims = p.columns.len();
+            for (i, row) in buf.chunks_exact_mut(dims).enumerate() {
+                for (j, x) in row.iter_mut().enumerate() {
+                    *x = p.columns[j][first as usize + i];
+                }
+            }
+        }),
+    }
+}
+
+/// The base-p Faure points of `generate --seq faure:base=P` (P prime, not a power of two),
+/// scrambled in base P when asked.
+fn radix_points(a: &GenerateArgs, p: u64) -> Result<RadixPoints, CliError> {
+    if let Some(b) = a.scramble_base.filter(|&b| b != p) {
+        return Err(CliError::Usage(format!(
+            "--scramble-base {b} differs from the base {p} of {}: a base-b scramble acts on \
+             base-b digits",
+            a.seq
+        )));
+    }
+    if a.order == OrderArg::Gray {
+        return Err(CliError::Usage(format!(
+            "--order gray is a base-2 order; {} is generated in natural order",
+            a.seq
+        )));
+    }
+    let count = match (a.log2_n, a.n) {
+        (Some(m), None) if m < 64 => 1u64 << m,
+        (None, Some(n)) if n > 0 => n,
+        _ => {
+            return Err(CliError::Usage(
+                "give one of --log2-n (below 64) and --n (at least 1)".into(),
+            ))
+        }
+    };
+    let width = width_from_bits(a.bits)?;
+    let mut points = radix_points::faure_points(p, a.start, count, a.dims, width)?;
+    if let Some(s) = radix_points::radix_scrambler(&a.scramble, points.layout.radix(), a.seed)? {
+        points.scramble(&s);
+    }
+    Ok(points)
+}
+
 /// Runs `generate`.
 pub fn run(a: GenerateArgs) -> Result<ExitCode, CliError> {
-    let p = plan(&a)?;
     let format = a
         .format
         .or_else(|| a.output.as_deref().and_then(format_of))
@@ -328,6 +395,24 @@ pub fn run(a: GenerateArgs) -> Result<ExitCode, CliError> {
             "--words applies to npy and csv; hex is always words".into(),
         ));
     }
+    if let Some(p) = radix_points::radix_sequence(&a.seq) {
+        let points = radix_points(&a, p)?;
+        let src = radix_rows(&points);
+        write_atomically(a.output.as_deref(), |out| match format {
+            PointFormat::Npy => write_npy(&src, a.words, out),
+            PointFormat::Csv | PointFormat::Hex => write_text(&src, format, a.words, out),
+        })?;
+        return Ok(ExitCode::SUCCESS);
+    }
+    if let Some(r) = radix_points::radix_of_request(&a.scramble, a.scramble_base)? {
+        return Err(CliError::Usage(format!(
+            "a base-{b} scramble acts on base-{b} digits: generate a base-{b} sequence \
+             (--seq faure:base={b}, b prime) or scramble your own points with `gartowen \
+             scramble --scramble-base {b}`",
+            b = r.get()
+        )));
+    }
+    let p = plan(&a)?;
     let src = rows(&p, a.order);
     write_atomically(a.output.as_deref(), |out| match format {
         PointFormat::Npy => write_npy(&src, a.words, out),

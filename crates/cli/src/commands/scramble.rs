@@ -1,10 +1,12 @@
 //! `gartowen scramble`: scramble the user's own points or words with a registry scrambler.
 
-use super::generate::{format_of, write_npy, write_text, PointFormat, RowSource};
-use crate::input::{read_points, InputFormat};
+use super::generate::{format_of, radix_rows, write_npy, write_text, PointFormat, RowSource};
+use crate::input::{read_points, read_points_typed, FloatWords, InputFormat};
 use crate::output::write_atomically;
 use crate::CliError;
 use clap::Args;
+use gartowen::core::{Radix, RadixLayout, Width};
+use gartowen::radix_points;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -18,6 +20,7 @@ use std::process::ExitCode;
 ///   gartowen scramble pts.npy --scramble owen-oracle --seed 3 -o scrambled.npy
 ///   gartowen scramble words.hex --scramble art-owen-16p --seed 1 --format hex
 ///   gartowen scramble pts.csv --scramble owen-oracle:xor --scramble-base 4 --seed 9
+///   gartowen scramble faure3.npy --scramble owen-oracle --scramble-base 3 -o owen3.npy
 #[derive(Args, Debug)]
 #[command(verbatim_doc_comment)]
 pub struct ScrambleArgs {
@@ -33,9 +36,19 @@ pub struct ScrambleArgs {
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
     /// Scrambling base for scramblers whose base is a parameter (default 2). A base the
-    /// scrambler does not take (a fixed base, or its `:base=B` option) is refused.
+    /// scrambler does not take (a fixed base, or its `:base=B` option) is refused. A base that
+    /// is not a power of two (3..65535, `owen-oracle[:cyclic|:per-depth]`) reads each
+    /// coordinate as base-b digits: floats are snapped to the base-b grid (see --digits),
+    /// words are base-b digit integers (below b^m, value word·b^-m), and --words/hex output
+    /// writes such digit words.
     #[arg(long = "scramble-base")]
     pub scramble_base: Option<u64>,
+    /// In a base that is not a power of two: the base-b digits the float values carry; each
+    /// is snapped to the nearest multiple of b^-DIGITS within 2^-46 (a float cannot hold
+    /// 1/3) and refused when it is too near to read safely. Default: the fewest digits that
+    /// index every point, ⌈log_b N⌉ (the digits of the first N points of a base-b sequence).
+    #[arg(long)]
+    pub digits: Option<u32>,
     /// Output format (default: by -o's extension, else the input's).
     #[arg(long, value_enum)]
     pub format: Option<PointFormat>,
@@ -68,6 +81,16 @@ pub fn run(a: ScrambleArgs) -> Result<ExitCode, CliError> {
             "--words applies to npy and csv; hex is always words".into(),
         ));
     }
+    if let Some(radix) = radix_points::radix_of_request(&a.scramble, a.scramble_base)? {
+        return run_in_radix(&a, radix, format);
+    }
+    if a.digits.is_some() {
+        return Err(CliError::Usage(
+            "--digits applies to bases that are not powers of two (floats hold base-2^q \
+             digits exactly)"
+                .into(),
+        ));
+    }
     let scrambler = gartowen::generate::build_scrambler(
         &a.scramble,
         a.seed,
@@ -93,6 +116,7 @@ pub fn run(a: ScrambleArgs) -> Result<ExitCode, CliError> {
         .collect();
     let src = RowSource {
         width,
+        radix: None,
         dims: points.dims(),
         count: points.len() as u64,
         block: Box::new(|first, buf| {
@@ -103,6 +127,33 @@ pub fn run(a: ScrambleArgs) -> Result<ExitCode, CliError> {
             }
         }),
     };
+    write_atomically(a.output.as_deref(), |out| match format {
+        PointFormat::Npy => write_npy(&src, a.words, out),
+        PointFormat::Csv | PointFormat::Hex => write_text(&src, format, a.words, out),
+    })?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `scramble` in a base b that is not a power of two: the coordinates as base-b digit words,
+/// scrambled dimension by dimension, written as values or digit words.
+fn run_in_radix(a: &ScrambleArgs, radix: Radix, format: PointFormat) -> Result<ExitCode, CliError> {
+    let scrambler = radix_points::radix_scrambler(&a.scramble, radix, a.seed)?;
+    let (points, floats) = read_points_typed(&a.file, a.input_format, FloatWords::Exact)?;
+    let mut digits = if floats {
+        radix_points::from_floats(&points, RadixLayout::new(Width::W64, radix)?, a.digits)?
+    } else if a.digits.is_some() {
+        return Err(CliError::Usage(format!(
+            "--digits reads float values; the words of {} are base-{} digit integers already",
+            a.file.display(),
+            radix.get()
+        )));
+    } else {
+        radix_points::from_digit_words(&points, RadixLayout::new(points.width(), radix)?)?
+    };
+    if let Some(s) = &scrambler {
+        digits.scramble(s);
+    }
+    let src = radix_rows(&digits);
     write_atomically(a.output.as_deref(), |out| match format {
         PointFormat::Npy => write_npy(&src, a.words, out),
         PointFormat::Csv | PointFormat::Hex => write_text(&src, format, a.words, out),
