@@ -13,7 +13,7 @@ use gartowen_core::{RadixLayout, SplitMix64};
 const PROBES_PER_BATCH: u64 = 64;
 
 /// What a probe inspection found.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize)]
 pub struct RadixInspection {
     /// Nodes whose map was checked in full.
     pub nodes_checked: u64,

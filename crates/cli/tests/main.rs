@@ -9,6 +9,7 @@ mod clobbering;
 mod containment;
 mod discrepancy;
 mod generate;
+mod inspect_radix;
 mod junit;
 mod oracle;
 mod radix_points;

@@ -15,7 +15,8 @@
 //! Every size comes from the level's [`LevelPlan`].
 
 pub use crate::candidate::{
-    external_candidate, names_or_all, radix_seeds, registry_candidate, registry_seeds, Candidate,
+    external_candidate, names_or_all, radix_candidate, radix_seeds, registry_candidate,
+    registry_seeds, Candidate,
 };
 pub use crate::judge::{judge_families, profile};
 pub use crate::level::{Level, LevelPlan};

@@ -5,8 +5,10 @@ use crate::CliError;
 use clap::Args;
 use gartowen::core::{BuildContext, Claim, PowerOfTwoBase, Scrambler, Width};
 use gartowen::external::{ExternalProcess, ExternalScrambler};
-use gartowen::oracles::inspector::{inspect_exhaustive, inspect_probes, InspectReport};
-use gartowen::verify::{judge_families, law_runner::run_laws, Candidate, Level, SeedBuilder};
+use gartowen::oracles::inspector::{inspect_exhaustive, inspect_probes, InspectReport, Violation};
+use gartowen::verify::{
+    judge_families, law_runner::run_laws, Candidate, CheckResult, Level, SeedBuilder,
+};
 use std::process::ExitCode;
 use std::sync::Arc;
 
@@ -23,6 +25,7 @@ use std::sync::Arc;
 ///   gartowen inspect --scramble owen-oracle:base=16 --base 2 --width 16      (exit 1)
 ///   gartowen inspect --scramble owen-oracle:xor --base 16 --width 64 --probes 5000 --json
 ///   gartowen inspect --external ./my_scrambler --base 2 --width 32 --laws   (node and joint laws)
+///   gartowen inspect --scramble owen-oracle:per-depth --base 3 --laws --claim owen   (exit 1)
 ///
 /// With --laws, the marginal and joint law tests of `verify --level quick` run over seeds
 /// 0, 1, 2, … and print their per-depth profile (`.` no deviation detected, `x` deviation,
@@ -49,7 +52,9 @@ pub struct InspectArgs {
     /// Claim to judge the laws on (default: the scrambler's own; owen for external programs).
     #[arg(long, requires = "laws")]
     pub claim: Option<String>,
-    /// Base B = 2^q in which to test nestedness (also the default base of the scrambler).
+    /// Base B in which to test nestedness (also the default base of the scrambler): 2^q, or
+    /// any other base 3..65535, whose words are base-B digit integers (probes only; the
+    /// built-in scrambler there is owen-oracle[:cyclic|:per-depth]).
     #[arg(long)]
     pub base: u64,
     /// Word width in bits (≤ 16 exhaustive; 32 or 64 by probes). Default: 16, or 32 with
@@ -166,7 +171,14 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
         use crate::paths::{named, refuse_clobbering};
         refuse_clobbering(&[named("--external", &program)], &[named("--junit", junit)])?;
     }
-    let base = PowerOfTwoBase::from_base(a.base)?;
+    let base = match gartowen::external::ProtocolBase::from_base(a.base)
+        .map_err(|e| CliError::Usage(format!("--base {}: {e}", a.base)))?
+    {
+        gartowen::external::ProtocolBase::Radix(radix) => {
+            return super::inspect_radix::run(&a, radix)
+        }
+        gartowen::external::ProtocolBase::PowerOfTwo(base) => base,
+    };
     let bits = a
         .width
         .unwrap_or(if a.external.is_some() { 32 } else { 16 });
@@ -275,64 +287,105 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
     } else {
         crate::out!("{}", text(&report, &s.name()));
         if let Some((claim, checks)) = &laws {
-            crate::outln!(
-                "  laws over seeds 0, 1, 2, … ({}-bit words, dimension 0; dimensions 0..64 for \
-                 `dimensions`) judged as {claim} (family-wise α = 1e-3):",
-                if s.supports_width(Width::W32) { 32 } else { 64 }
-            );
-            let profile = gartowen::verify::profile(checks);
-            for c in checks {
-                let row = profile
-                    .iter()
-                    .find(|(f, _)| *f == c.check)
-                    .map_or("", |(_, r)| r.as_str());
-                crate::outln!(
-                    "    {:<11} {:<9} depth 0→ {row}",
-                    c.check,
-                    format!("{:?}", c.verdict).to_lowercase()
-                );
-                crate::outln!("        {}", c.detail);
-            }
+            let bits = if s.supports_width(Width::W32) { 32 } else { 64 };
+            print_laws(*claim, checks, bits)?;
         }
     }
     if let Some(path) = &a.junit {
-        use gartowen::battery::junit::{JunitCase, JunitSuite};
-        let mut cases = vec![JunitCase {
-            name: format!("nested in base {}", base.base()),
-            failure: report.first_violation.as_ref().map(|v| {
-                (
-                    format!("not a nested scramble: {:?} at depth {}", v.kind, v.depth),
-                    format!(
-                        "prefix {:#x}: inputs {:#x}, {:#x} -> outputs {:#x}, {:#x}",
-                        v.prefix, v.inputs[0], v.inputs[1], v.outputs[0], v.outputs[1]
-                    ),
-                )
-            }),
-            skipped: false,
-            output: format!(
-                "{} evaluations, {} nodes",
-                report.evaluations, report.nodes_checked
-            ),
-            seconds: 0.0,
-        }];
-        if let Some((_, checks)) = &laws {
-            cases.extend(gartowen::battery::junit::check_cases(checks));
-        }
-        let suite = JunitSuite {
-            name: s.name(),
-            cases,
-            certificate: None,
+        let nested = Nested {
+            base: base.base(),
+            violation: report
+                .first_violation
+                .as_ref()
+                .map(|v| (v, format!("{:#x}", v.prefix), hex_words(v))),
+            evaluations: report.evaluations,
+            nodes: report.nodes_checked,
         };
-        crate::output::write_junit(path, "gartowen inspect", &[suite])?;
+        write_junit(path, &s.name(), &nested, laws.as_ref().map(|(_, c)| c))?;
     }
-    let laws_failed = laws.as_ref().is_some_and(|(_, checks)| {
+    Ok(exit_code(report.nested_scramble, laws.as_ref()))
+}
+
+/// The witness words of a violation in hex (binary words).
+fn hex_words(v: &Violation) -> String {
+    format!(
+        "inputs {:#x}, {:#x} -> outputs {:#x}, {:#x}",
+        v.inputs[0], v.inputs[1], v.outputs[0], v.outputs[1]
+    )
+}
+
+/// Exit 0 when nested and no law failed, else 1.
+pub(super) fn exit_code(nested: bool, laws: Option<&(Claim, Vec<CheckResult>)>) -> ExitCode {
+    let laws_failed = laws.is_some_and(|(_, checks)| {
         checks
             .iter()
             .any(|c| c.verdict == gartowen::verify::Verdict::Fail)
     });
-    Ok(if report.nested_scramble && !laws_failed {
+    if nested && !laws_failed {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)
-    })
+    }
+}
+
+/// The per-depth law profile of `--laws`, one family a line with its worst sub-test.
+pub(super) fn print_laws(claim: Claim, checks: &[CheckResult], bits: u32) -> Result<(), CliError> {
+    crate::outln!(
+        "  laws over seeds 0, 1, 2, … ({bits}-bit words, dimension 0; dimensions 0..64 for \
+         `dimensions`) judged as {claim} (family-wise α = 1e-3):"
+    );
+    let profile = gartowen::verify::profile(checks);
+    for c in checks {
+        let row = profile
+            .iter()
+            .find(|(f, _)| *f == c.check)
+            .map_or("", |(_, r)| r.as_str());
+        crate::outln!(
+            "    {:<11} {:<9} depth 0→ {row}",
+            c.check,
+            format!("{:?}", c.verdict).to_lowercase()
+        );
+        crate::outln!("        {}", c.detail);
+    }
+    Ok(())
+}
+
+/// The nestedness verdict as JUnit sees it: the base, the first violation (with its prefix
+/// and witness words already formatted for the base), the work done.
+pub(super) struct Nested<'a> {
+    pub base: u32,
+    pub violation: Option<(&'a Violation, String, String)>,
+    pub evaluations: u64,
+    pub nodes: u64,
+}
+
+/// Writes `--junit`: a testcase for nestedness and one per law check.
+pub(super) fn write_junit(
+    path: &std::path::Path,
+    name: &str,
+    nested: &Nested,
+    laws: Option<&Vec<CheckResult>>,
+) -> Result<(), CliError> {
+    use gartowen::battery::junit::{JunitCase, JunitSuite};
+    let mut cases = vec![JunitCase {
+        name: format!("nested in base {}", nested.base),
+        failure: nested.violation.as_ref().map(|(v, prefix, words)| {
+            (
+                format!("not a nested scramble: {:?} at depth {}", v.kind, v.depth),
+                format!("prefix {prefix}: {words}"),
+            )
+        }),
+        skipped: false,
+        output: format!("{} evaluations, {} nodes", nested.evaluations, nested.nodes),
+        seconds: 0.0,
+    }];
+    if let Some(checks) = laws {
+        cases.extend(gartowen::battery::junit::check_cases(checks));
+    }
+    let suite = JunitSuite {
+        name: name.to_string(),
+        cases,
+        certificate: None,
+    };
+    crate::output::write_junit(path, "gartowen inspect", &[suite])
 }

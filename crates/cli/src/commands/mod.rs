@@ -5,6 +5,7 @@ pub mod check;
 pub mod discrepancy;
 pub mod generate;
 pub mod inspect;
+pub mod inspect_radix;
 pub mod list;
 pub mod matrices;
 pub mod report;
