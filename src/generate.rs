@@ -170,6 +170,16 @@ impl GeneratePlan {
             PointCount::Exact(n) => n,
         };
         seq.check_range(r.start, count)?;
+        if let Some(radix) = crate::radix_points::radix_of_request(&r.scramble, r.scramble_base)? {
+            return Err(RequestError::Invalid(format!(
+                "a base-{b} scramble acts on base-{b} digits and {} is a base-{} sequence: \
+                 generate faure:base={b} (b prime), or scramble base-{b} points with \
+                 `gartowen scramble`",
+                kind.name(),
+                kind.base().base(),
+                b = radix.get()
+            )));
+        }
         let scrambler = build_scrambler(&r.scramble, r.seed, r.scramble_base, kind.base())?;
         if !scrambler.supports_width(width) {
             return Err(RequestError::Invalid(format!(

@@ -159,7 +159,7 @@ fn base_b_requests_that_cannot_work_exit_2_and_leave_the_output_alone() {
                 "-o",
                 o,
             ],
-            "--seq faure:base=3",
+            "generate faure:base=3",
         ),
         (
             &[

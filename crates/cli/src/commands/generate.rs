@@ -404,14 +404,6 @@ pub fn run(a: GenerateArgs) -> Result<ExitCode, CliError> {
         })?;
         return Ok(ExitCode::SUCCESS);
     }
-    if let Some(r) = radix_points::radix_of_request(&a.scramble, a.scramble_base)? {
-        return Err(CliError::Usage(format!(
-            "a base-{b} scramble acts on base-{b} digits: generate a base-{b} sequence \
-             (--seq faure:base={b}, b prime) or scramble your own points with `gartowen \
-             scramble --scramble-base {b}`",
-            b = r.get()
-        )));
-    }
     let p = plan(&a)?;
     let src = rows(&p, a.order);
     write_atomically(a.output.as_deref(), |out| match format {
