@@ -132,6 +132,12 @@ fn plan_refusals_name_the_bad_value() {
     assert_eq!(refuse(r).to_string(), "bits must be 32 or 64, not 16");
     let mut r = request("sobol", 2, PointCount::Exact(4), "owen-oracle");
     r.scramble_base = Some(3);
+    let e = refuse(r.clone());
+    assert!(
+        matches!(e, RequestError::Invalid(_)) && e.to_string().contains("base-2 sequence"),
+        "{e}"
+    );
+    r.scramble_base = Some(1);
     assert!(matches!(refuse(r), RequestError::Scrambler(_)));
     // The range past the index bits is the sequence's refusal.
     let mut r = request("sz4", 2, PointCount::Exact(4), "none");
