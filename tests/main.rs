@@ -15,6 +15,7 @@ mod owned_check;
 mod prerequisites;
 mod radix_battery;
 mod randomization_quality;
+mod request_table;
 mod scrambled_nets;
 mod shared_requests;
 mod theorems;

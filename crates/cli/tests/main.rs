@@ -11,6 +11,7 @@ mod discrepancy;
 mod generate;
 mod inspect_radix;
 mod junit;
+mod list_requests;
 mod oracle;
 mod radix_points;
 mod readme;

@@ -39,6 +39,7 @@ pub mod pair_law;
 pub mod pair_lemma;
 pub mod radix_nets;
 pub mod radix_words;
+pub mod request_log;
 pub mod sampling;
 pub mod stats;
 pub mod structure;

@@ -37,6 +37,61 @@ fn refuse_clobbering_any(a: &VerifyArgs) -> Result<(), CliError> {
 }
 
 /// `--list-checks`: the declared battery as text on standard output, or as JSON in `json`.
+/// `--list-requests`: the requests of every phase at `level`, for the Owen oracle of --base
+/// at --width seen as an external program.
+fn list_requests(a: &VerifyArgs, level: Level) -> Result<ExitCode, CliError> {
+    use gartowen::battery::request_log::{level_row, log_requests, markdown, LEVEL_HEADER};
+    let base = ProtocolBase::from_base(a.base)
+        .map_err(|e| CliError::Usage(format!("--base {}: {e}", a.base)))?;
+    let width = match a.width {
+        32 => Width::W32,
+        64 => Width::W64,
+        w => {
+            return Err(CliError::Usage(format!(
+                "--width {w}: the protocol carries 32- or 64-bit words"
+            )))
+        }
+    };
+    let registry = gartowen::registry();
+    let name = format!("owen-oracle:base={}", a.base);
+    let make = || {
+        let mut c = gartowen::verify::registry_candidate(&registry, &name, 0)
+            .expect("the oracle serves every protocol base");
+        c.max_dims = a.max_dims;
+        c
+    };
+    let phases = log_requests(make, level, width, a.seed);
+    crate::output::write_atomically(
+        a.json.as_deref().or(Some(std::path::Path::new("-"))),
+        |out| match &a.json {
+            Some(_) => serde_json::to_writer_pretty(&mut *out, &phases)
+                .map_err(|e| CliError::Io(e.to_string()))
+                .and_then(|()| {
+                    out.write_all(b"\n")
+                        .map_err(|e| CliError::Io(e.to_string()))
+                }),
+            None => {
+                let text = format!(
+                    "requests of `verify --level {}` to a base-{} program of {}-bit \
+                     words{} (one thread; with T threads, T seeds are in flight at once):\n{}",
+                    level.name(),
+                    base.get(),
+                    width.bits(),
+                    a.max_dims
+                        .map_or_else(String::new, |n| format!(" serving {n} dimensions")),
+                    markdown(&phases)
+                ) + &format!(
+                    "\nthe whole level (the README's row):\n{LEVEL_HEADER}{}\n",
+                    level_row(level, &phases)
+                );
+                out.write_all(text.as_bytes())
+                    .map_err(|e| CliError::Io(e.to_string()))
+            }
+        },
+    )?;
+    Ok(ExitCode::SUCCESS)
+}
+
 fn list_checks(json: Option<&std::path::Path>) -> Result<ExitCode, CliError> {
     use gartowen::battery::listing::{listing, listing_text};
     crate::output::write_atomically(json.or(Some(std::path::Path::new("-"))), |out| {
@@ -299,6 +354,9 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
         LevelArg::Full => Level::Full,
         LevelArg::Exhaustive => Level::Exhaustive,
     };
+    if a.list_requests {
+        return list_requests(&a, level);
+    }
     let mut external_failure = None;
     let mut claim_override = a.claim.clone();
     let mut shard_record = Shard::ALL;

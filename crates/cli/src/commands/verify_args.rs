@@ -41,6 +41,7 @@ pub enum LevelArg {
 ///
 /// Examples:
 ///   gartowen verify --list-checks       (what the battery runs, and every size per level)
+///   gartowen verify --list-requests --level full --base 16   (what a program is asked for)
 ///   gartowen verify --level quick
 ///   gartowen verify --impl art-owen-16p --impl lk-hash --json verify.json
 ///   gartowen verify --level quick --profile     (where the time goes: slowest checks, words)
@@ -71,6 +72,7 @@ pub enum LevelArg {
 ///   gartowen verify --external ./owen_nested --base 16 --equivalent-to owen --equivalence-seeds 4000
 #[derive(Args, Debug)]
 #[command(verbatim_doc_comment)]
+#[command(group(clap::ArgGroup::new("program").args(["external", "list_requests"]).multiple(true)))]
 pub struct VerifyArgs {
     /// Battery size.
     #[arg(long, value_enum, default_value_t = LevelArg::Quick)]
@@ -99,17 +101,17 @@ pub struct VerifyArgs {
     #[arg(long, conflicts_with_all = ["merge", "expect"])]
     pub dims: Option<String>,
     /// Scrambling base of the external program (a power of two, 2..=256).
-    #[arg(long, default_value_t = 2, requires = "external")]
+    #[arg(long, default_value_t = 2, requires = "program")]
     pub base: u64,
     /// Word width the external program receives: 32 or 64.
-    #[arg(long, default_value_t = 32, requires = "external")]
+    #[arg(long, default_value_t = 32, requires = "program")]
     pub width: u32,
     /// The external program serves dimensions 0..N only (a sampler with N dimensions per
     /// domain): no check asks for another. Checks choose their dimensions among those served
     /// (`nets` takes the first ones, `dimensions` compares 0..N); a sub-test that needs a
     /// dimension beyond them (root pairs up to (0,63); flip-rank needs 2) reports
     /// "not run: needs dimension D" and `?` in the profile, and counts towards no verdict.
-    #[arg(long, value_name = "N", requires = "external",
+    #[arg(long, value_name = "N", requires = "program",
           value_parser = clap::value_parser!(u32).range(1..))]
     pub max_dims: Option<u32>,
     /// Seed of the external program's main instance (the node law uses seeds 0, 1, 2, …).
@@ -155,6 +157,14 @@ pub struct VerifyArgs {
     #[arg(long, conflicts_with_all = ["merge", "external", "dims", "shard", "implementations",
           "junit", "equivalent_to", "claim"])]
     pub list_checks: bool,
+    /// Print what the battery would ask an external program for at --level, phase by phase,
+    /// and exit: requests (protocol frames), words, dimensions, seeds, widths, instances
+    /// alive at once and the most recent seeds a per-seed cache needs (measured on the Owen
+    /// oracle of --base at --width, one thread, honouring --max-dims; a failing program may
+    /// be asked less). With --json FILE the phases are written there as JSON instead.
+    #[arg(long, conflicts_with_all = ["merge", "external", "dims", "shard", "implementations",
+          "junit", "equivalent_to", "claim", "list_checks"])]
+    pub list_requests: bool,
     /// After the table, print where the time went: the 10 slowest (implementation, check)
     /// entries with seconds and words scrambled, then totals per check and per
     /// implementation (the seconds are also in the JSON, per check).
