@@ -120,6 +120,22 @@ pub fn build_scrambler(
     Ok(scrambler)
 }
 
+/// The base a `--scramble-base`/`:base=B` request asks for when it is not a power of two
+/// (`None`: a power of two, served by the binary path). `none` takes the flag's base alone.
+pub fn radix_of_request(
+    request: &str,
+    scramble_base: Option<u64>,
+) -> Result<Option<gartowen_core::Radix>, RequestError> {
+    let default = scramble_base.unwrap_or(2);
+    if request == "none" {
+        return match gartowen_core::PowerOfTwoBase::from_base(default) {
+            Ok(_) => Ok(None),
+            Err(_) => Ok(Some(gartowen_core::Radix::new(default)?)),
+        };
+    }
+    Ok(gartowen_owen::registry::requested_radix(request, default)?)
+}
+
 /// The word width for `bits` (32 or 64).
 pub fn width_from_bits(bits: u32) -> Result<Width, RequestError> {
     match bits {
@@ -170,7 +186,7 @@ impl GeneratePlan {
             PointCount::Exact(n) => n,
         };
         seq.check_range(r.start, count)?;
-        if let Some(radix) = crate::radix_points::radix_of_request(&r.scramble, r.scramble_base)? {
+        if let Some(radix) = radix_of_request(&r.scramble, r.scramble_base)? {
             return Err(RequestError::Invalid(format!(
                 "a base-{b} scramble acts on base-{b} digits and {} is a base-{} sequence: \
                  generate faure:base={b} (b prime), or scramble base-{b} points with \

@@ -10,13 +10,14 @@
 //! 2^-46 of a grid point they are that grid point, farther than 4·2^-46 from every grid point
 //! they are read as they are (truncated to m digits), in between they are refused.
 
+pub use crate::generate::radix_of_request;
 use crate::generate::RequestError;
 use crate::net_check::F64_RADIUS_LOG2;
 use gartowen_core::{Radix, RadixLayout, RadixScrambler, Width};
 use gartowen_netcheck::snap::snap_to_grid;
 use gartowen_netcheck::PointSet;
 use gartowen_owen::radix_tree::RadixOwen;
-use gartowen_owen::registry::{build_radix, requested_radix};
+use gartowen_owen::registry::build_radix;
 use gartowen_seq::radix::faure_prime;
 
 /// The most coordinates (points × dimensions) the base-b Faure generator makes in one call:
@@ -50,22 +51,6 @@ impl RadixPoints {
             s.scramble_batch(column, width, j as u32);
         }
     }
-}
-
-/// The base a `--scramble-base`/`:base=B` request asks for when it is not a power of two
-/// (`None`: a power of two, served by the binary path). `none` takes the flag's base alone.
-pub fn radix_of_request(
-    request: &str,
-    scramble_base: Option<u64>,
-) -> Result<Option<Radix>, RequestError> {
-    let default = scramble_base.unwrap_or(2);
-    if request == "none" {
-        return match gartowen_core::PowerOfTwoBase::from_base(default) {
-            Ok(_) => Ok(None),
-            Err(_) => Ok(Some(Radix::new(default)?)),
-        };
-    }
-    Ok(requested_radix(request, default)?)
 }
 
 /// The scrambler `request` in base `radix` with `seed` (`None` for `none`): the base-b Owen

@@ -5,7 +5,6 @@ pub mod check;
 pub mod discrepancy;
 pub mod generate;
 pub mod inspect;
-pub mod inspect_radix;
 pub mod list;
 pub mod matrices;
 pub mod report;

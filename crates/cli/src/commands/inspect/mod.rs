@@ -12,6 +12,8 @@ use gartowen::verify::{
 use std::process::ExitCode;
 use std::sync::Arc;
 
+mod radix;
+
 /// Decide from black-box evaluations whether a scrambler is a nested scramble in base B.
 ///
 /// Nested: output digit k depends only on input digits 0..k, and every node's map on digit k is
@@ -174,9 +176,7 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
     let base = match gartowen::external::ProtocolBase::from_base(a.base)
         .map_err(|e| CliError::Usage(format!("--base {}: {e}", a.base)))?
     {
-        gartowen::external::ProtocolBase::Radix(radix) => {
-            return super::inspect_radix::run(&a, radix)
-        }
+        gartowen::external::ProtocolBase::Radix(radix) => return radix::run(&a, radix),
         gartowen::external::ProtocolBase::PowerOfTwo(base) => base,
     };
     let bits = a

@@ -1,7 +1,7 @@
 //! `gartowen inspect --base B` for a base b that is not a power of two: the base-b probe
 //! inspector (digits of base-b digit words) and, with `--laws`, the battery's law families.
 
-use super::inspect::{exit_code, print_laws, write_junit, InspectArgs, Nested};
+use super::{exit_code, print_laws, write_junit, InspectArgs, Nested};
 use crate::CliError;
 use gartowen::core::{Claim, Radix, RadixLayout, Width};
 use gartowen::external::ProtocolBase;
@@ -28,10 +28,10 @@ pub fn run(a: &InspectArgs, radix: Radix) -> Result<ExitCode, CliError> {
     }
     let width = Width::new(a.width.unwrap_or(32))?;
     let layout = RadixLayout::new(width, radix)?;
-    let given_claim = super::parse_claim(&a.claim)?;
+    let given_claim = super::super::parse_claim(&a.claim)?;
     let (mut candidate, process) = match (&a.external, &a.scramble) {
         (Some(command), _) => {
-            let p = Arc::new(super::spawn_external(
+            let p = Arc::new(super::super::spawn_external(
                 command,
                 ProtocolBase::Radix(radix),
                 width,
