@@ -13,7 +13,11 @@
  *
  * Built with -DSERVED_DIMS=N, the program serves dimensions 0..N-1 only and exits with status 4
  * on a request for another (a sampler with N dimensions per domain); verify it with
- * `gartowen verify --external ./prog --max-dims N`. */
+ * `gartowen verify --external ./prog --max-dims N`.
+ *
+ * Built with -DSCRAMBLED_BITS=K (version 1), the reply keeps the input's bits below the top K
+ * (a library that scrambles only the bits its point count needs); verify it with
+ * `gartowen verify --external ./prog --bits K`. */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -75,7 +79,12 @@ static int serve(const char *self) {
         put_le(reply_header + 4, count, 4);
         fwrite(reply_header, 1, sizeof reply_header, stdout);
         for (uint32_t i = 0; i < count; i++) {
-            uint64_t y = scramble(get_le(buf + i * wb, wb), width, base, dim, seed);
+            uint64_t x = get_le(buf + i * wb, wb);
+            uint64_t y = scramble(x, width, base, dim, seed);
+#ifdef SCRAMBLED_BITS
+            uint64_t low = (width - SCRAMBLED_BITS >= 64) ? ~0ull : (1ull << (width - SCRAMBLED_BITS)) - 1;
+            y = (y & ~low) | (x & low);
+#endif
             put_le(buf + i * wb, y, wb);
         }
         fwrite(buf, wb, count, stdout);

@@ -22,6 +22,7 @@ mod stdout_errors;
 mod support;
 mod sweep;
 mod verify;
+mod verify_bits;
 mod verify_declared;
 mod verify_dims;
 mod verify_radix;

@@ -45,6 +45,7 @@ pub mod stats;
 pub mod structure;
 pub mod subtest;
 pub mod time_profile;
+pub mod top_bits;
 pub mod verdict;
 pub mod word_sweep;
 

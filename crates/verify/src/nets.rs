@@ -119,7 +119,8 @@ pub fn check_base(
         .build(dims.iter().max().expect("dims") + 1, width)
         .expect("built-in sequence");
     let r = base.q();
-    let top = max_m(base, level);
+    // A net of b^m points reads m digits: all of them must fit the word (K-bit views).
+    let top = max_m(base, level).min(width.bits() / r);
     for m in 1..=top {
         let expected = rank::t_value(&seq, &dims, r, m).expect("rank path");
         let n = 1u64 << (r * m);
@@ -159,7 +160,10 @@ pub fn check_nets(
     max_dims: Option<u32>,
 ) -> (Verdict, String) {
     let mut kept = Vec::new();
-    for base in nested_bases(s.base()) {
+    for base in nested_bases(s.base())
+        .into_iter()
+        .filter(|b| b.q() <= width.bits())
+    {
         match check_base(s, width, base, level, max_dims) {
             Ok(summary) => kept.push(summary.to_string()),
             Err(broken) => return (Verdict::Fail, broken.to_string()),

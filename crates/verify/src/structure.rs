@@ -125,12 +125,20 @@ fn supported_widths(s: &dyn Scrambler) -> Vec<Width> {
         .collect()
 }
 
-/// The width the battery scrambles at: 32 bits where supported, else 64.
+/// The width the battery scrambles at: 32 bits where supported, else 64, else the widest it
+/// supports (a view of the top K bits).
 pub fn working_width(s: &dyn Scrambler) -> Width {
     if s.supports_width(Width::W32) {
         Width::W32
-    } else {
+    } else if s.supports_width(Width::W64) {
         Width::W64
+    } else {
+        // A view of the top K bits (`verify --bits K`) supports K alone.
+        (1..64)
+            .rev()
+            .filter_map(|bits| Width::new(bits).ok())
+            .find(|&w| s.supports_width(w))
+            .unwrap_or(Width::W64)
     }
 }
 

@@ -260,6 +260,10 @@ fn run_external(
         a.expect.as_deref().map(|n| (&registry, n)),
     );
     candidate.max_dims = a.max_dims;
+    if let Some(k) = a.bits {
+        candidate =
+            gartowen::battery::top_bits::top_bits(candidate, width, k).map_err(CliError::Usage)?;
+    }
     let mut report = check_candidate(&candidate, level, 1);
     if a.equivalent_to.is_some() {
         // The estimators read dimensions 0 and 1, in a base 2^q.
@@ -447,6 +451,7 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
             parameters["external"] = serde_json::json!({
                 "command": command, "base": a.base, "width": a.width, "seed": a.seed,
                 "expect": a.expect, "timeout_seconds": a.timeout, "max_dims": a.max_dims,
+                "bits": a.bits,
                 "claim": reports[0].claim,
             });
         }

@@ -65,6 +65,7 @@ pub enum LevelArg {
 ///   gartowen verify --external './my_scrambler --fast' --base 16 --width 32
 ///   gartowen verify --external ./owen_per_bit --base 2 --width 64 --expect owen-per-bit-hash
 ///   gartowen verify --external ./four_dims --base 2 --max-dims 4   (serves dimensions 0..3)
+///   gartowen verify --external ./twelve_bits --base 2 --bits 12    (scrambles the top 12 bits)
 ///
 /// Equivalence to Owen (the estimator variance against the exact Owen variance of the base,
 /// TOST with a stated margin; the seeds used are printed and in the JSON):
@@ -165,6 +166,13 @@ pub struct VerifyArgs {
     #[arg(long, conflicts_with_all = ["merge", "external", "dims", "shard", "implementations",
           "junit", "equivalent_to", "claim", "list_checks"])]
     pub list_requests: bool,
+    /// Judge only the top K bits of each word of the external program (a library that
+    /// scrambles the ⌈log2 N⌉ bits its point count needs): requests carry K-bit words in the
+    /// top of --width-bit words (zeros below) and only the top K bits of each reply count;
+    /// depths below digit K are not tested. K from log2(--base) to --width.
+    #[arg(long, value_name = "K", requires = "external",
+          conflicts_with_all = ["dims", "expect", "equivalent_to"])]
+    pub bits: Option<u32>,
     /// After the table, print where the time went: the 10 slowest (implementation, check)
     /// entries with seconds and words scrambled, then totals per check and per
     /// implementation (the seconds are also in the JSON, per check).
