@@ -218,11 +218,16 @@ impl Claim {
 
     /// Parses `nested`, `marginal[:GROUP]`, `owen` or `independent:GROUP` (GROUP one of
     /// symmetric, affine, translation, cyclic; `marginal` alone means symmetric).
+    /// `per-depth[:GROUP]` (one permutation per dimension and depth, shared by every node of
+    /// that depth: scrambled Halton) promises exactly the marginal law, so it is
+    /// `marginal[:GROUP]`: its nodes are uniform, and the joint laws are measured, not judged.
     ///
     /// ```
     /// use gartowen_core::{Claim, NodeGroup};
     /// assert_eq!(Claim::parse("owen").unwrap(), Claim::OWEN);
     /// assert_eq!(Claim::parse("marginal:affine").unwrap(), Claim::marginal(NodeGroup::Affine));
+    /// assert_eq!(Claim::parse("per-depth").unwrap(), Claim::marginal(NodeGroup::Symmetric));
+    /// assert_eq!(Claim::parse("per-depth:cyclic").unwrap(), Claim::marginal(NodeGroup::Cyclic));
     /// assert!(Claim::parse("uniformish").is_err());
     /// ```
     pub fn parse(text: &str) -> Result<Claim, CoreError> {
@@ -240,7 +245,9 @@ impl Claim {
         match (head, group) {
             ("nested", None) => Some(Claim::NESTED),
             ("owen", None) => Some(Claim::OWEN),
-            ("marginal", g) => Some(Claim::marginal(g.unwrap_or(NodeGroup::Symmetric))),
+            ("marginal" | "per-depth", g) => {
+                Some(Claim::marginal(g.unwrap_or(NodeGroup::Symmetric)))
+            }
             ("independent", Some(g)) => Some(Claim::independent_over(g)),
             _ => None,
         }

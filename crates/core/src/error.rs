@@ -145,8 +145,9 @@ impl fmt::Display for CoreError {
                 Some(lower) => write!(f, "unknown claim '{text}'; claims are lower case: '{lower}'"),
                 None => write!(
                     f,
-                    "unknown claim '{text}'; use nested, owen, marginal[:GROUP] or \
-                     independent:GROUP (GROUP: symmetric, affine, translation, cyclic)"
+                    "unknown claim '{text}'; use nested, owen, marginal[:GROUP], \
+                     per-depth[:GROUP] (= marginal) or independent:GROUP (GROUP: symmetric, \
+                     affine, translation, cyclic)"
                 ),
             },
         }

@@ -28,7 +28,8 @@ pub enum LevelArg {
 ///
 /// Each implementation is judged only on what it claims (`gartowen list` shows the claims;
 /// --claim overrides them): `nested`, `marginal:GROUP` (node permutations uniform over
-/// symmetric|affine|translation|cyclic), `independent:GROUP`, or `owen` (= independent:symmetric).
+/// symmetric|affine|translation|cyclic; `per-depth[:GROUP]` says the same), `independent:GROUP`,
+/// or `owen` (= independent:symmetric).
 /// Unclaimed checks are `measured`. The family-wise false-alarm rate of a run is 1e-3
 /// (Bonferroni over implementations and sub-tests); a pass reads "no deviation detected at this
 /// power", and each sub-test's power (smallest Cohen's w at power 0.9, or what an exact test
@@ -132,7 +133,8 @@ pub struct VerifyArgs {
     #[arg(long)]
     pub junit: Option<PathBuf>,
     /// Judge on this claim instead of each implementation's own: nested | owen |
-    /// `marginal[:GROUP]` | `independent:GROUP` (GROUP: symmetric, affine, translation, cyclic).
+    /// `marginal[:GROUP]` | `per-depth[:GROUP]` (= marginal) | `independent:GROUP` (GROUP:
+    /// symmetric, affine, translation, cyclic).
     /// External programs default to owen.
     #[arg(long)]
     pub claim: Option<String>,
