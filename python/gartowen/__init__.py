@@ -487,6 +487,7 @@ def verify(
     expect: Optional[str] = None,
     name: Optional[str] = None,
     batch_seeds: bool = False,
+    max_dims: Optional[int] = None,
 ) -> VerifyResult:
     """Runs the ``gartowen verify`` battery on a vectorized Python scrambler.
 
@@ -519,6 +520,9 @@ def verify(
         expect: a registry scrambler it must equal bit for bit (e.g. ``"owen-per-bit-hash"``).
         name: the name in the report (default: the function's ``__qualname__``).
         batch_seeds: whether ``fn`` takes many seeds per call (above).
+        max_dims: the dimensions ``fn`` serves, 0..max_dims-1 (a sampler with N dimensions
+            per domain); ``fn`` is never called with another, and a sub-test that needs one
+            reports "not run: needs dimension D" (as ``verify --max-dims``).
 
     Returns:
         A :class:`VerifyResult`. An exception raised by ``fn`` (or a reply of the wrong shape,
@@ -538,8 +542,10 @@ def verify(
     name = _string("name", name)
     if not isinstance(batch_seeds, bool):
         raise TypeError(f"batch_seeds must be True or False, not {batch_seeds!r}")
+    if max_dims is not None:
+        max_dims = _integer("max_dims", max_dims, 1, 2**32 - 1)
     text, calls, words, python_seconds, seconds = _native.verify(
-        fn, name, base, width, level, claims, seed, expect, batch_seeds
+        fn, name, base, width, level, claims, seed, expect, batch_seeds, max_dims
     )
     cert = json.loads(text)
     report = cert["result"]["implementations"][0]

@@ -21,6 +21,7 @@ def discrepancy(
 def verify(
     func: Callable[[np.ndarray, int, int], np.ndarray], name: str, base: int, width: int,
     level: str, claim: str, seed: int, expect: Optional[str], batch_seeds: bool,
+    max_dims: Optional[int],
 ) -> Tuple[str, int, int, float, float]: ...
 def list_scramblers() -> str: ...
 def describe_box(

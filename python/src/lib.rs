@@ -271,7 +271,7 @@ fn discrepancy(
 /// words and seconds spent in the function, and the battery's wall seconds. Re-raises the
 /// function's first exception.
 #[pyfunction]
-#[pyo3(signature = (func, name, base, width, level, claim, seed, expect, batch_seeds))]
+#[pyo3(signature = (func, name, base, width, level, claim, seed, expect, batch_seeds, max_dims))]
 #[allow(clippy::too_many_arguments)]
 fn verify(
     py: Python<'_>,
@@ -284,7 +284,13 @@ fn verify(
     seed: u64,
     expect: Option<String>,
     batch_seeds: bool,
+    max_dims: Option<u32>,
 ) -> PyResult<(String, u64, u64, f64, f64)> {
+    if max_dims == Some(0) {
+        return Err(PyValueError::new_err(
+            "max_dims 0: a scrambler serves at least dimension 0",
+        ));
+    }
     // A base 2^q keeps binary words; any other base b ≥ 3 passes base-b digit integers.
     let (base_value, radix) = match PowerOfTwoBase::from_base(base) {
         Ok(b) => (b, None),
@@ -358,6 +364,7 @@ fn verify(
             }));
         }
         candidate.radix = radix;
+        candidate.max_dims = max_dims;
         candidate.twin = expect.as_deref().map(|twin| {
             let seeds = match radix {
                 Some(r) => radix_seeds(twin, r),
@@ -387,7 +394,8 @@ fn verify(
             "family_alpha": gartowen::verify::stats::FAMILY_ALPHA,
             "claim_override": claim,
             "python": { "function": name, "base": base, "width": width, "seed": seed,
-                        "expect": expect, "claim": report.claim, "batch_seeds": batch_seeds },
+                        "expect": expect, "claim": report.claim, "batch_seeds": batch_seeds,
+                        "max_dims": max_dims },
         }),
         gartowen::verify::seeds_used(seed),
         vec![InputRecord {

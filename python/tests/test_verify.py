@@ -188,3 +188,22 @@ def test_a_base_3_function_gets_digit_words_passes_as_owen_and_equals_its_twin_n
     # The function is an Owen scramble, keyed otherwise than the built-in oracle.
     r = gartowen.verify(base3, 3, 32, expect="owen-oracle")
     assert [c["check"] for c in r.failures] == ["expect"]
+
+
+def test_max_dims_keeps_every_call_below_it_and_reports_what_could_not_run():
+    seen = set()
+
+    def four_dims(words, dim, seed):
+        if dim >= 4:
+            raise AssertionError(f"dimension {dim} requested from a 4-dimensional sampler")
+        seen.add(dim)
+        return owen_per_bit(words, dim, seed)
+
+    r = gartowen.verify(four_dims, 2, 32, max_dims=4)
+    assert r.passed, r.failures
+    assert seen == {0, 1, 2, 3}
+    assert r.certificate["parameters"]["python"]["max_dims"] == 4
+    not_run = [t for c in r.report["checks"] for t in c.get("tests", []) if t.get("not_run")]
+    assert any("needs dimension" in t["not_run"] for t in not_run), not_run
+    with pytest.raises(ValueError, match="max_dims"):
+        gartowen.verify(four_dims, 2, 32, max_dims=0)
