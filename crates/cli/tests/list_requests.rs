@@ -56,6 +56,25 @@ fn the_request_table_follows_the_settings_it_is_given() {
             "{p}"
         );
     }
+    // Nets in the program's own base only: Sobol's three dimensions, no Faure net of base 256.
+    let (code, _, err) = run(&[
+        "verify",
+        "--list-requests",
+        "--net-bases",
+        "own",
+        "--json",
+        json.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let phases: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let nets = phases
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|p| p["phase"] == "nets")
+        .unwrap();
+    assert_eq!(nets["dims"], serde_json::json!([0, 1, 2]), "{nets}");
     for (args, fragment) in [
         (
             &["verify", "--list-requests", "--base", "512"][..],
@@ -66,6 +85,7 @@ fn the_request_table_follows_the_settings_it_is_given() {
             "--width 16",
         ),
         (&["verify", "--base", "3"][..], "--base"),
+        (&["verify", "--net-bases", "own"][..], "--net-bases"),
     ] {
         let (code, _, err) = run(args);
         assert_eq!(code, 2, "{args:?}: {err}");

@@ -33,6 +33,9 @@ pub struct Candidate<'a> {
     /// and instances are [`RadixWords`]. `None`: base 2^q, the
     /// probe's [`Scrambler::base`].
     pub radix: Option<Radix>,
+    /// Check nets only in its own base (`--net-bases own`: an implementation never meant for
+    /// the larger bases 2^(kq) it is nested in); `false`: in every such base up to 256.
+    pub own_base_nets: bool,
 }
 
 impl<'a> Candidate<'a> {
@@ -60,6 +63,7 @@ impl<'a> Candidate<'a> {
             claim,
             max_dims: None,
             radix: None,
+            own_base_nets: false,
         })
     }
 }
@@ -107,6 +111,7 @@ pub fn registry_candidate<'a>(
         twin: None,
         max_dims: None,
         radix: None,
+        own_base_nets: false,
     })
 }
 
@@ -161,6 +166,7 @@ pub fn external_candidate<'a>(
         }),
         max_dims: None,
         radix,
+        own_base_nets: false,
     }
 }
 
@@ -183,6 +189,7 @@ pub fn radix_candidate<'a>(
         twin: None,
         max_dims: None,
         radix: Some(radix),
+        own_base_nets: false,
     })
 }
 

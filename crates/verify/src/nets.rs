@@ -152,18 +152,22 @@ pub fn check_base(
     })
 }
 
-/// The `nets` check: every base the scrambler is nested in, in dimensions 0..`max_dims`.
+/// The `nets` check: every base the scrambler is nested in (its own only with
+/// `own_base_only`), in dimensions 0..`max_dims`.
 pub fn check_nets(
     s: &dyn Scrambler,
     width: Width,
     level: Level,
     max_dims: Option<u32>,
+    own_base_only: bool,
 ) -> (Verdict, String) {
     let mut kept = Vec::new();
-    for base in nested_bases(s.base())
-        .into_iter()
-        .filter(|b| b.q() <= width.bits())
-    {
+    let bases = if own_base_only {
+        vec![s.base()]
+    } else {
+        nested_bases(s.base())
+    };
+    for base in bases.into_iter().filter(|b| b.q() <= width.bits()) {
         match check_base(s, width, base, level, max_dims) {
             Ok(summary) => kept.push(summary.to_string()),
             Err(broken) => return (Verdict::Fail, broken.to_string()),

@@ -90,7 +90,7 @@ pub const STRUCTURE_CHECKS: [StructureCheck; 6] = [
         stage: Stage::BeforeLaws,
         applies: |_| true,
         run: |c, plan| match c.radix {
-            None => check_nets(c.probe.as_ref(), plan, c.max_dims),
+            None => check_nets(c.probe.as_ref(), plan, c.max_dims, c.own_base_nets),
             Some(radix) => check_radix_nets(c.probe.as_ref(), radix, plan, c.max_dims),
         },
     },
@@ -324,12 +324,17 @@ fn check_nested_radix(s: &dyn Scrambler, radix: Radix) -> Outcome {
     }
 }
 
-fn check_nets(s: &dyn Scrambler, plan: &LevelPlan, max_dims: Option<u32>) -> Outcome {
+fn check_nets(
+    s: &dyn Scrambler,
+    plan: &LevelPlan,
+    max_dims: Option<u32>,
+    own_base_only: bool,
+) -> Outcome {
     let width = working_width(s);
     if !s.supports_width(width) {
         return Outcome::skipped("neither 32- nor 64-bit words");
     }
-    let (verdict, detail) = crate::nets::check_nets(s, width, plan.level, max_dims);
+    let (verdict, detail) = crate::nets::check_nets(s, width, plan.level, max_dims, own_base_only);
     Outcome {
         verdict,
         detail,

@@ -1,6 +1,6 @@
 //! `gartowen verify`: the conformance battery over the registry or named implementations.
 
-pub use super::verify_args::{program_record, LevelArg, VerifyArgs};
+pub use super::verify_args::{program_record, LevelArg, NetBases, VerifyArgs};
 use crate::CliError;
 use gartowen::battery::verdict::Outcome;
 use gartowen::certificate::{CertVerdict, Certificate, InputRecord};
@@ -58,6 +58,7 @@ fn list_requests(a: &VerifyArgs, level: Level) -> Result<ExitCode, CliError> {
         let mut c = gartowen::verify::registry_candidate(&registry, &name, 0)
             .expect("the oracle serves every protocol base");
         c.max_dims = a.max_dims;
+        c.own_base_nets = a.net_bases == NetBases::Own;
         c
     };
     let phases = log_requests(make, level, width, a.seed);
@@ -260,6 +261,7 @@ fn run_external(
         a.expect.as_deref().map(|n| (&registry, n)),
     );
     candidate.max_dims = a.max_dims;
+    candidate.own_base_nets = a.net_bases == NetBases::Own;
     if let Some(k) = a.bits {
         candidate =
             gartowen::battery::top_bits::top_bits(candidate, width, k).map_err(CliError::Usage)?;
@@ -451,7 +453,7 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
             parameters["external"] = serde_json::json!({
                 "command": command, "base": a.base, "width": a.width, "seed": a.seed,
                 "expect": a.expect, "timeout_seconds": a.timeout, "max_dims": a.max_dims,
-                "bits": a.bits,
+                "bits": a.bits, "net_bases": format!("{:?}", a.net_bases).to_lowercase(),
                 "claim": reports[0].claim,
             });
         }

@@ -72,6 +72,15 @@ pub enum LevelArg {
 /// TOST with a stated margin; the seeds used are printed and in the JSON):
 ///   gartowen verify --impl art-owen-16p --equivalent-to owen --margin 0.1
 ///   gartowen verify --external ./owen_nested --base 16 --equivalent-to owen --equivalence-seeds 4000
+/// Which bases the nets check uses.
+#[derive(Clone, Copy, Debug, clap::ValueEnum, PartialEq, Eq)]
+pub enum NetBases {
+    /// The base and every base 2^(kq) ≤ 256 it is nested in.
+    Nested,
+    /// The base alone.
+    Own,
+}
+
 #[derive(Args, Debug)]
 #[command(verbatim_doc_comment)]
 #[command(group(clap::ArgGroup::new("program").args(["external", "list_requests"]).multiple(true)))]
@@ -168,6 +177,12 @@ pub struct VerifyArgs {
     #[arg(long, conflicts_with_all = ["merge", "external", "dims", "shard", "implementations",
           "junit", "equivalent_to", "claim", "list_checks"])]
     pub list_requests: bool,
+    /// Bases the nets check uses: `nested` (default), the program's base and every base
+    /// 2^(kq) ≤ 256 a nested scramble in it is also nested in (what the claim implies); `own`,
+    /// its base only, for a program never meant for the larger bases (no Faure dimensions
+    /// up to 255 are then asked for).
+    #[arg(long, value_enum, default_value_t = NetBases::Nested, requires = "program")]
+    pub net_bases: NetBases,
     /// Judge only the top K bits of each word of the external program (a library that
     /// scrambles the ⌈log2 N⌉ bits its point count needs): requests carry K-bit words in the
     /// top of --width-bit words (zeros below) and only the top K bits of each reply count;

@@ -212,6 +212,7 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
             claim: s.claim(),
             max_dims: None,
             radix: None,
+            own_base_nets: false,
         };
         let outcome = (check.run)(&c, Level::Quick.plan());
         if let Some(e) = process.as_ref().and_then(|p| p.failure()) {
@@ -264,6 +265,7 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
             claim,
             max_dims: None,
             radix: None,
+            own_base_nets: false,
         };
         let families = run_laws(&c, Level::Quick, 0).map_err(|e| CliError::Usage(e.to_string()))?;
         if let Some(e) = external_failure() {
