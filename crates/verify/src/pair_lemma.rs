@@ -70,15 +70,20 @@ fn analyse(cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
             after[cell(r + 1)] += 1;
         }
         let (xr, xr2) = (tree.digit(u, r), tree.digit(v, r));
+        // Binary words read best in hex; base-b digit integers in decimal.
+        let (u, v) = match tree.power_of_two() {
+            Some(_) => (format!("{u:#x}"), format!("{v:#x}")),
+            None => (u.to_string(), v.to_string()),
+        };
         tests.push(SubTest::chi(
-            format!("r = {r}: output digits {r} of inputs {u:#x}, {v:#x} (distinct, uniform)"),
+            format!("r = {r}: output digits {r} of inputs {u}, {v} (distinct, uniform)"),
             Some(r),
             Requirement::Marginal,
             chi_square(&at_r, &pair_image_law(cfg.group(), b, xr, xr2)),
         ));
         tests.push(SubTest::chi(
             format!(
-                "r = {r}: output digits {} of inputs {u:#x}, {v:#x} (independent, uniform)",
+                "r = {r}: output digits {} of inputs {u}, {v} (independent, uniform)",
                 r + 1
             ),
             Some(r + 1),
