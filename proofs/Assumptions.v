@@ -1,7 +1,7 @@
 (** Every main theorem must be closed under the global context (no axioms, no admits), except
     the floating-point theorems of [Float.v], whose real numbers rest on the standard axioms of
     Coq's classical reals (listed in README.md; check.sh allows exactly those). *)
-From Gartowen Require Import Nested Factor Counterexample Art ArtWord Binary Laws NodeLaws.
+From Gartowen Require Import Nested NetMonotone Factor Counterexample Art ArtWord Binary Laws NodeLaws.
 
 Print Assumptions factorization_unique.
 Print Assumptions factorization_bijective.
@@ -20,6 +20,8 @@ Print Assumptions prefix_class_onto.
 Print Assumptions count_scrambled.
 Print Assumptions net_preserved.
 Print Assumptions sequence_preserved.
+Print Assumptions net_monotone.
+Print Assumptions net_monotone_le.
 Print Assumptions art_is_nested_scramble.
 Print Assumptions art_preserves_nets.
 Print Assumptions art_word_is_nested.
