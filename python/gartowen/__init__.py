@@ -183,7 +183,11 @@ def scramble(words_or_points: Any, name: str, seed: int, *, base: Optional[int] 
         name: registry scrambler ``NAME[:OPTION...]``, e.g. ``"owen-oracle"``,
             ``"art-owen-16p"``, ``"owen-oracle:xor"``.
         seed: the scrambler's seed, an integer in [0, 2^64).
-        base: scrambling base for scramblers whose base is a parameter (default 2).
+        base: scrambling base for scramblers whose base is a parameter (default 2). A base
+            that is not a power of two (3..65535, ``owen-oracle[:cyclic|:per-depth]``) reads
+            float64 values as base-b digits, snapped to the base-b grid of ⌈log_b n⌉ digits
+            (a float cannot hold 1/3), and words as base-b digit integers (below b^m), as
+            ``gartowen scramble --scramble-base B`` does.
 
     Returns:
         An array of the input's shape and dtype; equal to ``gartowen scramble`` on the same data.

@@ -16,6 +16,7 @@ use gartowen::netcheck::CheckBase;
 use gartowen::owen::registry::build_radix;
 use gartowen::reports::{discrepancy_pairs, timed_discrepancy};
 use gartowen::verify::{check_candidate, radix_seeds, registry_seeds, Candidate, Level};
+use numpy::{ndarray::Array2, IntoPyArray};
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use serde_json::json;
@@ -114,6 +115,20 @@ fn scramble<'py>(
     let width = input.width();
     let (n, dims, element) = (input.n, input.dims, input.element);
     let mut flat = input.words;
+    let radix = gartowen::generate::radix_of_request(name, base).map_err(value_error)?;
+    if let Some(radix) = radix {
+        // Base-b digits, as `gartowen scramble --scramble-base B` reads and writes them.
+        let out = py
+            .detach(|| scramble_in_radix(&flat, width, dims, element, name, seed, radix))
+            .map_err(value_error)?;
+        return match out {
+            RadixOut::Values(v) => Ok(Array2::from_shape_vec((n, dims), v)
+                .map_err(|e| PyValueError::new_err(e.to_string()))?
+                .into_pyarray(py)
+                .into_any()),
+            RadixOut::Words(w) => to_array(py, w, n, dims, width, element),
+        };
+    }
     py.detach(|| {
         let ctx = BuildContext {
             seed,
@@ -149,6 +164,51 @@ fn scramble<'py>(
     })
     .map_err(value_error)?;
     to_array(py, flat, n, dims, width, element)
+}
+
+/// The result of a base-b scramble: float values (float input) or digit words.
+enum RadixOut {
+    Values(Vec<f64>),
+    Words(Vec<u64>),
+}
+
+/// `scramble` in a base that is not a power of two: floats snapped to the base-b grid, words
+/// as base-b digit integers (the library path `gartowen scramble` takes).
+fn scramble_in_radix(
+    flat: &[u64],
+    width: gartowen::core::Width,
+    dims: usize,
+    element: Element,
+    name: &str,
+    seed: u64,
+    radix: gartowen::core::Radix,
+) -> Result<RadixOut, RequestError> {
+    use gartowen::core::RadixLayout;
+    use gartowen::radix_points::{from_digit_words, from_floats, radix_scrambler};
+    let scrambler = radix_scrambler(name, radix, seed)?;
+    let set = gartowen::netcheck::PointSet::from_flat(width, dims, flat)
+        .map_err(|e| RequestError::Invalid(e.to_string()))?;
+    let mut points = if element == Element::F64 {
+        from_floats(&set, RadixLayout::new(width, radix)?, None)?
+    } else {
+        from_digit_words(&set, RadixLayout::new(width, radix)?)?
+    };
+    if let Some(s) = &scrambler {
+        points.scramble(s);
+    }
+    let n = points.len();
+    let row_major = |f: &dyn Fn(u64) -> u64| -> Vec<u64> {
+        (0..n * dims)
+            .map(|k| f(points.columns[k % dims][k / dims]))
+            .collect()
+    };
+    Ok(if element == Element::F64 {
+        let layout = points.layout;
+        let words = row_major(&|y| y);
+        RadixOut::Values(words.iter().map(|&y| layout.to_f64(y)).collect())
+    } else {
+        RadixOut::Words(row_major(&|y| y))
+    })
 }
 
 /// `gartowen check --json` on an array: the certificate JSON text and whether it holds.

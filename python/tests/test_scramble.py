@@ -95,3 +95,27 @@ def test_bad_scrambler_arguments():
         gartowen.scramble(np.zeros((4, 1)), "lk-hash", 1)
     y = gartowen.scramble((np.arange(4) * 2**30).astype(np.uint32), "lk-hash", 1)
     assert y.dtype == np.uint32 and len(set(y.tolist())) == 4
+
+
+def test_base_3_floats_and_digit_words_equal_the_cli(cli, tmp_path):
+    """A base that is not a power of two: floats snapped to the base-3 grid, words as base-3
+    digit integers, bit-identical to `gartowen scramble --scramble-base 3`."""
+    for extra, name in [(["--bits", "64"], "plain.npy"), (["--words"], "words.npy")]:
+        plain = tmp_path / name
+        code, _, err = cli.run("generate", "--seq", "faure:base=3", "--dims", "3", "--n", "81",
+                               *extra, "-o", plain)
+        assert code == 0, err
+        out = tmp_path / ("cli-" + name)
+        code, _, err = cli.run("scramble", plain, "--scramble", "owen-oracle:per-depth",
+                               "--scramble-base", "3", "--seed", "4",
+                               *(["--words"] if "--words" in extra else []), "-o", out)
+        assert code == 0, err
+        mine = gartowen.scramble(np.load(plain), "owen-oracle:per-depth", 4, base=3)
+        theirs = np.load(out)
+        assert mine.dtype == theirs.dtype and np.array_equal(mine, theirs), name
+        assert not np.array_equal(mine, np.load(plain))
+    # Words must be base-3 digit integers below 3^20; other bases' scramblers are refused.
+    with pytest.raises(ValueError, match="below 3\\^20"):
+        gartowen.scramble(np.array([[3**20]], dtype=np.uint32), "owen-oracle", 0, base=3)
+    with pytest.raises(ValueError, match="only owen-oracle"):
+        gartowen.scramble(np.array([[0.5]]), "art-owen-2", 0, base=3)
