@@ -156,6 +156,10 @@ mod tests {
             top_bits(c, Width::W32, k).map(|c| c.name)
         };
         assert_eq!(build(12, PowerOfTwoBase::B2).unwrap(), "x (top 12 bits)");
+        // The bounds themselves are allowed: one digit, and the whole word.
+        assert_eq!(build(1, PowerOfTwoBase::B2).unwrap(), "x (top 1 bits)");
+        assert_eq!(build(4, PowerOfTwoBase::B16).unwrap(), "x (top 4 bits)");
+        assert_eq!(build(32, PowerOfTwoBase::B2).unwrap(), "x (top 32 bits)");
         assert!(build(0, PowerOfTwoBase::B2)
             .unwrap_err()
             .contains("between 1"));
@@ -165,5 +169,28 @@ mod tests {
         assert!(build(3, PowerOfTwoBase::B16)
             .unwrap_err()
             .contains("between 4"));
+    }
+}
+
+#[cfg(test)]
+mod candidate_tests {
+    use super::*;
+    use crate::sampling::ManySeeds;
+
+    #[test]
+    fn the_probe_and_every_instance_are_views_and_batches_of_seeds_are_dropped() {
+        let full = |_| Ok(Box::new(gartowen_core::Identity) as Box<dyn Scrambler>);
+        let mut c = Candidate::from_builder("x", Claim::OWEN, Box::new(full)).unwrap();
+        let many: Box<ManySeeds> = Box::new(|words: &[u64], _w, _d, _f, count| {
+            Ok(words.repeat(count as usize))
+        });
+        c.many = Some(many);
+        let k = Width::new(12).unwrap();
+        let c = top_bits(c, Width::W32, 12).unwrap();
+        assert!(c.many.is_none(), "a batch of seeds would bypass the view");
+        assert!(c.probe.supports_width(k) && !c.probe.supports_width(Width::W32));
+        let s = (c.with_seed)(5).unwrap();
+        assert!(s.supports_width(k) && !s.supports_width(Width::W32));
+        assert_eq!(c.probe.scramble(0xabc, k, 0), 0xabc);
     }
 }
