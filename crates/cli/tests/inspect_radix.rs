@@ -3,16 +3,7 @@
 //! the digits (a bijection, not nested) is caught with its witness, and requests that cannot
 //! work exit 2.
 
-use crate::support::gartowen;
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = gartowen(args);
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+use crate::support::run;
 
 /// A version-2 program that writes the base-b digits of each word in reverse order.
 const REVERSED_DIGITS: &str = r#"

@@ -1,16 +1,7 @@
 //! `gartowen verify --list-requests`: the per-phase table honours --base, --width and
 //! --max-dims, its JSON carries the same phases, and settings no program could have exit 2.
 
-use crate::support::gartowen;
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = gartowen(args);
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+use crate::support::run;
 
 #[test]
 fn the_request_table_follows_the_settings_it_is_given() {

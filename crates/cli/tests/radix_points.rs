@@ -3,17 +3,8 @@
 //! scrambled set is still a (0,m,3)-net in base 3 by `check`, digit words round-trip, and bad
 //! requests exit 2 without touching the output.
 
-use crate::support::gartowen;
+use crate::support::run;
 use std::path::Path;
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = gartowen(args);
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
 
 fn path(p: &Path) -> &str {
     p.to_str().unwrap()

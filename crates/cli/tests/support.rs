@@ -10,6 +10,16 @@ pub fn gartowen(args: &[&str]) -> Output {
         .expect("the gartowen binary runs")
 }
 
+/// [`gartowen`] as (exit code, stdout, stderr), the streams as text.
+pub fn run(args: &[&str]) -> (i32, String, String) {
+    let out = gartowen(args);
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
 /// `examples/external/NAME.c` compiled with `cc -O2 FLAGS…` into `dir`; the binary's path. Its
 /// name carries the flags, so one folder holds several builds of one example.
 pub fn build_c_example(dir: &std::path::Path, name: &str, flags: &[&str]) -> String {

@@ -181,9 +181,8 @@ mod candidate_tests {
     fn the_probe_and_every_instance_are_views_and_batches_of_seeds_are_dropped() {
         let full = |_| Ok(Box::new(gartowen_core::Identity) as Box<dyn Scrambler>);
         let mut c = Candidate::from_builder("x", Claim::OWEN, Box::new(full)).unwrap();
-        let many: Box<ManySeeds> = Box::new(|words: &[u64], _w, _d, _f, count| {
-            Ok(words.repeat(count as usize))
-        });
+        let many: Box<ManySeeds> =
+            Box::new(|words: &[u64], _w, _d, _f, count| Ok(words.repeat(count as usize)));
         c.many = Some(many);
         let k = Width::new(12).unwrap();
         let c = top_bits(c, Width::W32, 12).unwrap();

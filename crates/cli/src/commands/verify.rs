@@ -37,10 +37,8 @@ fn refuse_clobbering_any(a: &VerifyArgs) -> Result<(), CliError> {
 }
 
 /// `--list-checks`: the declared battery as text on standard output, or as JSON in `json`.
-/// `--list-requests`: the requests of every phase at `level`, for the Owen oracle of --base
-/// at --width seen as an external program.
-fn list_requests(a: &VerifyArgs, level: Level) -> Result<ExitCode, CliError> {
-    use gartowen::battery::request_log::{level_row, log_requests, markdown, LEVEL_HEADER};
+/// The program's `--base` and `--width`, or an error naming the bad one.
+fn protocol_base_and_width(a: &VerifyArgs) -> Result<(ProtocolBase, Width), CliError> {
     let base = ProtocolBase::from_base(a.base)
         .map_err(|e| CliError::Usage(format!("--base {}: {e}", a.base)))?;
     let width = match a.width {
@@ -52,6 +50,14 @@ fn list_requests(a: &VerifyArgs, level: Level) -> Result<ExitCode, CliError> {
             )))
         }
     };
+    Ok((base, width))
+}
+
+/// `--list-requests`: the requests of every phase at `level`, for the Owen oracle of --base
+/// at --width seen as an external program.
+fn list_requests(a: &VerifyArgs, level: Level) -> Result<ExitCode, CliError> {
+    use gartowen::battery::request_log::{level_row, log_requests, markdown, LEVEL_HEADER};
+    let (base, width) = protocol_base_and_width(a)?;
     let registry = gartowen::registry();
     let name = format!("owen-oracle:base={}", a.base);
     let make = || {
@@ -224,17 +230,7 @@ fn run_external(
     command: &str,
     level: Level,
 ) -> Result<(ImplReport, Option<String>), CliError> {
-    let base = ProtocolBase::from_base(a.base)
-        .map_err(|e| CliError::Usage(format!("--base {}: {e}", a.base)))?;
-    let width = match a.width {
-        32 => Width::W32,
-        64 => Width::W64,
-        w => {
-            return Err(CliError::Usage(format!(
-                "--width {w}: the protocol carries 32- or 64-bit words"
-            )))
-        }
-    };
+    let (base, width) = protocol_base_and_width(a)?;
     let registry = gartowen::registry();
     match (&a.expect, base) {
         (Some(name), ProtocolBase::Radix(radix)) => {

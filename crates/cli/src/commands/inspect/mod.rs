@@ -199,21 +199,11 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
             .iter()
             .find(|c| c.name == "function")
             .expect("the function check is declared");
-        let c = Candidate {
-            index: 0,
-            name: s.name(),
-            probe: with_seed(a.seed).map_err(CliError::Usage)?,
-            // A closure borrowing the builder for this block only (the laws below take it).
-            #[allow(clippy::redundant_closure)]
-            with_seed: Box::new(|seed| with_seed(seed)),
-            many: None,
-            health: Box::new(|| None),
-            twin: None,
-            claim: s.claim(),
-            max_dims: None,
-            radix: None,
-            own_base_nets: false,
-        };
+        // A closure borrowing the builder for this block only (the laws below take it).
+        #[allow(clippy::redundant_closure)]
+        let mut c = Candidate::from_builder(s.name(), s.claim(), Box::new(|seed| with_seed(seed)))
+            .map_err(CliError::Usage)?;
+        c.probe = with_seed(a.seed).map_err(CliError::Usage)?;
         let outcome = (check.run)(&c, Level::Quick.plan());
         if let Some(e) = process.as_ref().and_then(|p| p.failure()) {
             return Err(CliError::External(e.to_string()));
@@ -252,21 +242,9 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
     let laws = if a.laws {
         // External programs report the claim given (default owen); registry entries their own.
         let claim = super::parse_claim(&a.claim)?.unwrap_or_else(|| s.claim());
-        let name = s.name();
         let probe = with_seed(a.seed).map_err(CliError::Usage)?;
-        let c = Candidate {
-            index: 0,
-            name,
-            probe,
-            with_seed,
-            many: None,
-            health: Box::new(|| None),
-            twin: None,
-            claim,
-            max_dims: None,
-            radix: None,
-            own_base_nets: false,
-        };
+        let mut c = Candidate::from_builder(s.name(), claim, with_seed).map_err(CliError::Usage)?;
+        c.probe = probe;
         let families = run_laws(&c, Level::Quick, 0).map_err(|e| CliError::Usage(e.to_string()))?;
         if let Some(e) = external_failure() {
             return Err(CliError::External(e.to_string()));
@@ -280,11 +258,7 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
             "tool": "gartowen", "version": env!("CARGO_PKG_VERSION"), "command": "inspect",
             "scrambler": s.name(), "seed": a.seed, "dim": a.dim, "report": report,
         });
-        if let Some((claim, checks)) = &laws {
-            doc["claim"] = serde_json::json!(claim.to_string());
-            doc["laws"] = serde_json::json!(checks);
-            doc["profile"] = serde_json::json!(gartowen::verify::profile(checks));
-        }
+        add_laws_json(&mut doc, laws.as_ref());
         crate::outln!("{}", serde_json::to_string_pretty(&doc).expect("json"));
     } else {
         crate::out!("{}", text(&report, &s.name()));
@@ -314,6 +288,15 @@ fn hex_words(v: &Violation) -> String {
         "inputs {:#x}, {:#x} -> outputs {:#x}, {:#x}",
         v.inputs[0], v.inputs[1], v.outputs[0], v.outputs[1]
     )
+}
+
+/// The `--laws` part of the JSON report: the claim judged, the checks and the profile.
+pub(super) fn add_laws_json(doc: &mut serde_json::Value, laws: Option<&(Claim, Vec<CheckResult>)>) {
+    if let Some((claim, checks)) = laws {
+        doc["claim"] = serde_json::json!(claim.to_string());
+        doc["laws"] = serde_json::json!(checks);
+        doc["profile"] = serde_json::json!(gartowen::verify::profile(checks));
+    }
 }
 
 /// Exit 0 when nested and no law failed, else 1.

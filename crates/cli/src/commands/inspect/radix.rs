@@ -1,7 +1,7 @@
 //! `gartowen inspect --base B` for a base b that is not a power of two: the base-b probe
 //! inspector (digits of base-b digit words) and, with `--laws`, the battery's law families.
 
-use super::{exit_code, print_laws, write_junit, InspectArgs, Nested};
+use super::{add_laws_json, exit_code, print_laws, write_junit, InspectArgs, Nested};
 use crate::CliError;
 use gartowen::core::{Claim, Radix, RadixLayout, Width};
 use gartowen::external::ProtocolBase;
@@ -103,11 +103,7 @@ pub fn run(a: &InspectArgs, radix: Radix) -> Result<ExitCode, CliError> {
                 "first_violation": report.first_violation,
             },
         });
-        if let Some((claim, checks)) = &laws {
-            doc["claim"] = serde_json::json!(claim.to_string());
-            doc["laws"] = serde_json::json!(checks);
-            doc["profile"] = serde_json::json!(gartowen::verify::profile(checks));
-        }
+        add_laws_json(&mut doc, laws.as_ref());
         crate::outln!("{}", serde_json::to_string_pretty(&doc).expect("json"));
     } else {
         crate::outln!(
