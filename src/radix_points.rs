@@ -86,10 +86,20 @@ pub fn from_floats(
 ) -> Result<RadixPoints, RequestError> {
     let b = layout.radix().get() as u64;
     let depth = digits.unwrap_or_else(|| digits_for(layout.radix(), points.len() as u64));
-    if depth == 0 || depth > layout.num_digits() {
+    // Deeper than a float resolves (and so deeper than the word) is the snap rule's refusal.
+    if depth == 0 {
+        return Err(RequestError::Invalid(
+            "--digits 0: the values carry at least one base-b digit".into(),
+        ));
+    }
+    if let Err(e) = gartowen_netcheck::snap::grid(b, depth, F64_RADIUS_LOG2) {
+        let why = match e {
+            gartowen_netcheck::NetError::BadValue { reason, .. } => reason,
+            other => other.to_string(),
+        };
         return Err(RequestError::Invalid(format!(
-            "--digits {depth}: base {b} words hold 1..={} digits",
-            layout.num_digits()
+            "--digits {depth}: {}",
+            why.replace("this check needs", "asked for")
         )));
     }
     let snapped = match snap_to_grid(points, b, depth, F64_RADIUS_LOG2)

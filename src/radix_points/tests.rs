@@ -24,6 +24,17 @@ fn faure_words_are_the_exact_fractions_scaled_to_the_word() {
     );
     assert!(faure_points(9, 0, 4, 2, Width::W32).is_err()); // not a prime
     assert!(faure_points(3, u64::MAX, 2, 1, Width::W32).is_err());
+    // 16-bit words hold one base-257 digit: 257 points fit, the 258th needs a second digit.
+    let w16 = Width::new(16).unwrap();
+    assert_eq!(
+        faure_points(257, 0, 257, 1, w16).unwrap().columns[0][256],
+        256
+    );
+    let e = faure_points(257, 0, 258, 1, w16).unwrap_err().to_string();
+    assert!(
+        e.contains("needs 2 base-257 digits; 16-bit words hold 1"),
+        "{e}"
+    );
 }
 
 #[test]
@@ -44,8 +55,18 @@ fn floats_of_a_base_3_net_snap_back_to_their_exact_digits() {
     assert!(truncated_wrong > 0);
     // 27 points: three digits by default.
     assert_eq!(digits_for(radix(3), 27), 3);
-    assert!(from_floats(&points, layout, Some(41)).is_err());
+    let e = from_floats(&points, layout, Some(28))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("resolve at most 27 base-3 digits"), "{e}");
+    assert!(from_floats(&points, layout, Some(27)).is_ok());
     assert!(from_floats(&points, layout, Some(0)).is_err());
+    assert_eq!((read.len(), read.is_empty()), (27, false));
+    let none = RadixPoints {
+        layout,
+        columns: vec![],
+    };
+    assert_eq!((none.len(), none.is_empty()), (0, true));
 }
 
 #[test]
