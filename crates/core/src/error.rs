@@ -101,10 +101,18 @@ impl fmt::Display for CoreError {
             CoreError::NotPowerOfTwoBase(b) => {
                 write!(f, "base {b} is not a power of two 2^q with q in 1..=8")
             }
-            CoreError::InvalidRadix(b) => write!(
-                f,
-                "base {b} is not in 3..=65535 or is a power of two (powers of two use base 2^q digits)"
-            ),
+            CoreError::InvalidRadix(b) => match b {
+                0 | 1 => write!(f, "base {b}: a base is at least 2"),
+                b if b.is_power_of_two() && *b > 256 => write!(
+                    f,
+                    "base {b} is a power of two above 256: bases 2^q go up to 256 (q ≤ 8)"
+                ),
+                b if *b > 65535 => write!(f, "base {b} is above 65535, the largest base served"),
+                b => write!(
+                    f,
+                    "base {b} is a power of two: its digits are bits (base 2^q), not base-b integers"
+                ),
+            },
             CoreError::RadixTooLarge { base, width } => {
                 write!(f, "not one base-{base} digit fits a {width}-bit word")
             }

@@ -218,6 +218,17 @@ mod tests {
         for b in [3u64, 5, 6, 7, 12, 255, 257, 65_535] {
             assert_eq!(Radix::new(b).unwrap().get() as u64, b);
         }
+        // Each refusal says which rule the base breaks.
+        let why = |b: u64| Radix::new(b).unwrap_err().to_string();
+        assert_eq!(why(1), "base 1: a base is at least 2");
+        assert!(why(512).contains("power of two above 256"), "{}", why(512));
+        assert!(
+            why(65_536).contains("power of two above 256"),
+            "{}",
+            why(65_536)
+        );
+        assert!(why(65_537).contains("above 65535"), "{}", why(65_537));
+        assert!(why(16).contains("digits are bits"), "{}", why(16));
     }
 
     #[test]
