@@ -1,12 +1,16 @@
 (** Every main theorem must be closed under the global context (no axioms, no admits), except
     the floating-point theorems of [Float.v], whose real numbers rest on the standard axioms of
     Coq's classical reals (listed in README.md; check.sh allows exactly those). *)
-From Gartowen Require Import Nested NetMonotone Factor Counterexample Art ArtWord Binary Laws NodeLaws.
+From Gartowen Require Import Nested NetMonotone Factor Counterexample Art ArtWord Binary Laws Symmetric NodeLaws.
 
 Print Assumptions factorization_unique.
 Print Assumptions factorization_bijective.
 Print Assumptions output_uniform.
 Print Assumptions pair_lemma.
+Print Assumptions Sb_transitive.
+Print Assumptions Sb_two_transitive.
+Print Assumptions symmetric_pair_lemma.
+Print Assumptions Sb_sizes_3_4.
 Print Assumptions art_law_transitive.
 Print Assumptions art_output_uniform.
 Print Assumptions s4_two_transitive.
