@@ -3,14 +3,13 @@
     against the Rust code ([tests/extracted_differential.rs], driver in [extracted/driver.ml]).
 
     Trusted beyond Coq's extraction: [nat] is OCaml's [int] ([ExtrOcamlNatInt]; every value here
-    is far below 2^62), [Nat.lxor] is OCaml's [lxor] and [Nat.shiftr] is [lsr] (equal on
-    non-negative ints; the shifts are below 63). Words and codes stay in Coq's binary [N]. *)
+    is far below 2^62). [Nat.lxor] and [Nat.shiftr] are extracted from their Coq definitions (a
+    mapping to OCaml's [lxor]/[lsr] was once declared here, on a name the code does not use, so
+    it never took effect; it is gone rather than trusted). Words and codes stay in Coq's
+    binary [N]. *)
 
 From Coq Require Import Extraction ExtrOcamlBasic ExtrOcamlNatInt NArith.
 From Gartowen Require Import Nested ArtWord.
-
-Extract Inlined Constant Nat.lxor => "(lxor)".
-Extract Inlined Constant Nat.shiftr => "(lsr)".
 
 (** The Rust scramble of dimension [j]: [ART_root(x ⊕ A_j) ⊕ D_j] on [W]-bit words. *)
 Definition art_word_dim (q W : nat) (child psi : nat -> nat -> nat) (code64 : nat -> N)
