@@ -143,21 +143,37 @@ fn words_for(seed: u64) -> Vec<(Width, u32, u64)> {
     v
 }
 
-fn act_section(out: &mut String, s: &ArtOwen, width: Width, dim: u32, x: u64) {
-    let q = s.variant().q();
+/// One `act` line: the node maps along x's path, reconstructed from outputs alone (at depth k
+/// the image of digit d is digit k of the output for x's first k digits, then d, then a tail
+/// drawn afresh), x's digits and its Rust output's. The extracted nested scramble built from
+/// these maps reproduces the output only if every node's map depends on its prefix alone
+/// (prefix keying): the maps are not read from the implementation, so nothing is compared
+/// with itself.
+fn act_section(
+    out: &mut String,
+    s: &dyn Scrambler,
+    q: u32,
+    width: Width,
+    dim: u32,
+    x: u64,
+    rng: &mut SplitMix64,
+) {
     let layout = DigitLayout::new(width, PowerOfTwoBase::from_q(q).unwrap());
     let k = layout.num_digits();
     let y = s.scramble(x, width, dim);
     write!(out, "act {k}").unwrap();
-    let mut prefix = 0u64;
     for depth in 0..k {
-        let p = s.node_permutation(width, dim, depth, prefix);
         let size = 1u32 << layout.digit_bits(depth);
+        let tail = rng.next_u64() & width.mask();
         write!(out, " {size}").unwrap();
         for d in 0..size {
-            write!(out, " {}", p.apply(d)).unwrap();
+            let mut w = tail;
+            for j in 0..depth {
+                w = layout.set(w, j, layout.get(x, j));
+            }
+            w = layout.set(w, depth, d);
+            write!(out, " {}", layout.get(s.scramble(w, width, dim), depth)).unwrap();
         }
-        prefix = (prefix << layout.digit_bits(depth)) | layout.get(x, depth) as u64;
     }
     for depth in 0..k {
         write!(out, " {}", layout.get(x, depth)).unwrap();
@@ -166,6 +182,25 @@ fn act_section(out: &mut String, s: &ArtOwen, width: Width, dim: u32, x: u64) {
         write!(out, " {}", layout.get(y, depth)).unwrap();
     }
     out.push('\n');
+}
+
+/// A bijection that is not prefix-keyed: `inner`, then the top bit flipped when the input's
+/// lowest bit is set (the root's map depends on the tail).
+struct TailKeyed(ArtOwen);
+
+impl Scrambler for TailKeyed {
+    fn name(&self) -> String {
+        "tail-keyed".into()
+    }
+    fn base(&self) -> PowerOfTwoBase {
+        self.0.base()
+    }
+    fn claim(&self) -> gartowen::core::Claim {
+        self.0.claim()
+    }
+    fn scramble(&self, x: u64, width: Width, dim: u32) -> u64 {
+        self.0.scramble(x, width, dim) ^ ((x & 1) << (width.bits() - 1))
+    }
 }
 
 fn net_section(out: &mut String, points: &PointSet, q: u32, m: u32) {
@@ -219,7 +254,8 @@ fn extracted_coq_code_agrees_with_the_rust_code_and_sees_mutants() {
             let mut rng = SplitMix64::new(100 + i as u64);
             for dim in [0, 3] {
                 for _ in 0..20 {
-                    act_section(&mut input, &s, w, dim, rng.next_u64() & w.mask());
+                    let x = rng.next_u64() & w.mask();
+                    act_section(&mut input, &s, v.q(), w, dim, x, &mut rng);
                 }
             }
         }
@@ -270,6 +306,17 @@ fn extracted_coq_code_agrees_with_the_rust_code_and_sees_mutants() {
         ),
         ("TailUntranslated", Box::new(TailUntranslated(real.clone()))),
     ];
+    // Prefix keying: a map of the root that depends on the tail is seen by the act section.
+    let mut input = String::new();
+    let mut rng = SplitMix64::new(9);
+    let tail_keyed = TailKeyed(real.clone());
+    for _ in 0..20 {
+        let x = rng.next_u64() & Width::W32.mask();
+        act_section(&mut input, &tail_keyed, 3, Width::W32, 0, x, &mut rng);
+    }
+    input.push_str("done\n");
+    let (ok, stdout, _) = run_driver(&driver, &input);
+    assert!(!ok, "a tail-keyed root went unseen:\n{stdout}");
     for (mutant, bad) in &mutants {
         let mut input = String::new();
         art_section(&mut input, &real, bad.as_ref(), &words_for(1));
