@@ -1,4 +1,5 @@
-//! gartowen: generate, scramble and verify quasi-Monte Carlo point sets in bases 2^q.
+//! gartowen: generate, scramble and verify quasi-Monte Carlo point sets in bases 2^q and,
+//! through the base-b oracle and digit words, in every other base b ≥ 3.
 //!
 //! This facade re-exports the workspace crates and assembles the one scrambler [`registry`].
 
