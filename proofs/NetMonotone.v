@@ -9,7 +9,7 @@
 
 From Coq Require Import List Arith Bool Lia.
 Import ListNotations.
-From Gartowen Require Import Nested.
+From Gartowen Require Import Laws Symmetric Nested.
 
 Section Monotone.
 
@@ -23,7 +23,7 @@ Fixpoint refine (j d : nat) (B : list (list nat)) : list (list nat) :=
   | p :: B', S j' => p :: refine j' d B'
   end.
 
-Definition sum_digits (f : nat -> nat) : nat := fold_right plus 0 (map f (seq 0 b)).
+Definition sum_digits (f : nat -> nat) : nat := sumL f (seq 0 b).
 
 Lemma firstn_S_nth : forall (x : list nat) k, k < length x ->
   firstn (S k) x = firstn k x ++ [nth k x 0].
@@ -59,55 +59,20 @@ Proof.
   - rewrite IH by lia. destruct (prefix_of p x); reflexivity.
 Qed.
 
-Lemma sum_seq_eqb : forall x start len,
-  fold_right plus 0 (map (fun d => if x =? d then 1 else 0) (seq start len)) =
-  if (start <=? x) && (x <? start + len) then 1 else 0.
-Proof.
-  intros x start len. revert start. induction len as [|len IH]; intro start; simpl.
-  - rewrite Nat.add_0_r. destruct (start <=? x) eqn:F, (x <? start) eqn:G; simpl; auto.
-    apply Nat.leb_le in F. apply Nat.ltb_lt in G. lia.
-  - rewrite IH.
-    destruct (x =? start) eqn:E.
-    + apply Nat.eqb_eq in E. subst.
-      replace (S start <=? start) with false by (symmetry; apply Nat.leb_gt; lia).
-      replace (start <=? start) with true by (symmetry; apply Nat.leb_le; lia).
-      replace (start <? start + S len) with true by (symmetry; apply Nat.ltb_lt; lia).
-      reflexivity.
-    + apply Nat.eqb_neq in E.
-      destruct (S start <=? x) eqn:F1, (start <=? x) eqn:F2,
-        (x <? S start + len) eqn:F3, (x <? start + S len) eqn:F4; simpl; auto;
-      repeat match goal with
-        | H : (_ <=? _) = true |- _ => apply Nat.leb_le in H
-        | H : (_ <=? _) = false |- _ => apply Nat.leb_gt in H
-        | H : (_ <? _) = true |- _ => apply Nat.ltb_lt in H
-        | H : (_ <? _) = false |- _ => apply Nat.ltb_ge in H
-      end; lia.
-Qed.
-
 Lemma sum_digits_one : forall x, x < b -> sum_digits (fun d => if x =? d then 1 else 0) = 1.
 Proof.
-  intros x H. unfold sum_digits. rewrite sum_seq_eqb.
+  intros x H. unfold sum_digits. rewrite sumL_eqb_seq.
   replace ((0 <=? x) && (x <? 0 + b)) with true; auto.
   symmetry. apply andb_true_intro. split; [apply Nat.leb_le | apply Nat.ltb_lt]; lia.
 Qed.
 
-Lemma sum_digits_zero : sum_digits (fun _ => 0) = 0.
-Proof. unfold sum_digits. induction (seq 0 b); simpl; auto. Qed.
-
-Lemma sum_digits_plus : forall f g,
-  sum_digits (fun d => f d + g d) = sum_digits f + sum_digits g.
-Proof. intros f g. unfold sum_digits. induction (seq 0 b); simpl; lia. Qed.
-
 Lemma sum_digits_const : forall c, sum_digits (fun _ => c) = b * c.
-Proof.
-  intro c. unfold sum_digits. rewrite <- (seq_length b 0) at 2.
-  induction (seq 0 b); simpl; lia.
-Qed.
+Proof. intro c. unfold sum_digits. rewrite sumL_const', seq_length. lia. Qed.
 
 Lemma sum_digits_ext : forall f g, (forall d, d < b -> f d = g d) ->
   sum_digits f = sum_digits g.
 Proof.
-  intros f g H. unfold sum_digits. f_equal. apply map_ext_in. intros d Hd.
+  intros f g H. unfold sum_digits. apply sumL_ext. intros d Hd.
   apply in_seq in Hd. apply H. lia.
 Qed.
 
@@ -118,7 +83,7 @@ Lemma count_refine : forall n s B Ps j,
   count B Ps = sum_digits (fun d => count (refine j d B) Ps).
 Proof.
   intros n s B Ps j WF LB J N. induction Ps as [|P Ps IH].
-  - unfold count. simpl. symmetry. apply sum_digits_zero.
+  - unfold count. simpl. symmetry. rewrite sum_digits_const. lia.
   - inversion WF as [|P' Ps' WP WPs]; subst.
     destruct WP as [LP [VP NP]].
     assert (Lj : length (nth j P []) = n).
@@ -133,14 +98,15 @@ Proof.
       (fun d => (if in_box (refine j d B) P then 1 else 0) +
                 length (filter (in_box (refine j d B)) Ps))).
     2: { intros d _. simpl. destruct (in_box (refine j d B) P); reflexivity. }
-    rewrite sum_digits_plus, <- IH by assumption.
+    unfold sum_digits in *. rewrite sumL_plus, <- IH by assumption. fold (sum_digits
+      (fun d => if in_box (refine j d B) P then 1 else 0)).
     rewrite (sum_digits_ext _ (fun d => if in_box B P then
               (if nth (length (nth j B [])) (nth j P []) 0 =? d then 1 else 0) else 0)).
     2: { intros d _. rewrite in_box_refine by lia.
          destruct (in_box B P), (_ =? d); reflexivity. }
     destruct (in_box B P); simpl.
     + rewrite sum_digits_one by exact Dj. reflexivity.
-    + rewrite sum_digits_zero. reflexivity.
+    + rewrite sum_digits_const. lia.
 Qed.
 
 Lemma refine_length : forall B j d, length (refine j d B) = length B.
