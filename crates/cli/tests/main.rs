@@ -25,4 +25,5 @@ mod verify;
 mod verify_bits;
 mod verify_declared;
 mod verify_dims;
+mod verify_external;
 mod verify_radix;
