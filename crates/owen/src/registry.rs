@@ -43,7 +43,7 @@ pub fn specs() -> Vec<ScramblerSpec> {
         name: "owen-oracle",
         default_base: PowerOfTwoBase::B2,
         claim: gartowen_core::Claim::OWEN,
-        summary: "exact full-tree Owen scramble; options :uniform (default) | :cyclic | :xor | :affine, :base=B",
+        summary: "exact full-tree Owen scramble; options :uniform (default) | :cyclic | :xor | :affine, :base=B (B = 2^q; any other B ≥ 3 takes :uniform | :cyclic | :per-depth)",
         build,
     }]
 }

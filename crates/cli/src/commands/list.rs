@@ -28,7 +28,7 @@ fn sequence_rows() -> Vec<serde_json::Value> {
         "faure:base=B".into(),
         SequenceKind::Faure(gartowen::core::PowerOfTwoBase::B2),
     ));
-    kinds
+    let mut rows: Vec<serde_json::Value> = kinds
         .into_iter()
         .map(|(name, k)| {
             let p = k.provenance();
@@ -42,7 +42,14 @@ fn sequence_rows() -> Vec<serde_json::Value> {
                 "provenance": p.label(), "source": p.source(),
             })
         })
-        .collect()
+        .collect();
+    // Generated as base-P digit words (`generate` only), not as a binary digital sequence.
+    rows.push(serde_json::json!({
+        "name": "faure:base=P", "base": "P", "max_dims": "P", "provenance": "published",
+        "source": "Faure (1982) in an odd prime base P (Pascal matrices mod P), as base-P digit \
+                   words: `generate` and base-P scrambling only",
+    }));
+    rows
 }
 
 fn list_sequences(json: bool) -> Result<ExitCode, CliError> {
