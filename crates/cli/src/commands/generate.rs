@@ -333,22 +333,30 @@ pub fn format_of(path: &std::path::Path) -> Option<PointFormat> {
     }
 }
 
-/// The rows of a base-b point set: its digit words, written as values k·b^-m or as words.
-pub fn radix_rows(p: &RadixPoints) -> RowSource<'_> {
+/// The rows of a point set held as columns of equal length (column j is dimension j).
+pub fn column_rows(
+    width: Width,
+    radix: Option<RadixLayout>,
+    columns: &[Vec<u64>],
+) -> RowSource<'_> {
     RowSource {
-        width: p.layout.width(),
-        radix: Some(p.layout),
-        dims: p.columns.len(),
-        count: p.len() as u64,
+        width,
+        radix,
+        dims: columns.len(),
+        count: columns.first().map_or(0, Vec::len) as u64,
         block: Box::new(move |first, buf| {
-            let dims = p.columns.len();
-            for (i, row) in buf.chunks_exact_mut(dims).enumerate() {
+            for (i, row) in buf.chunks_exact_mut(columns.len()).enumerate() {
                 for (j, x) in row.iter_mut().enumerate() {
-                    *x = p.columns[j][first as usize + i];
+                    *x = columns[j][first as usize + i];
                 }
             }
         }),
     }
+}
+
+/// The rows of a base-b point set: its digit words, written as values k·b^-m or as words.
+pub fn radix_rows(p: &RadixPoints) -> RowSource<'_> {
+    column_rows(p.layout.width(), Some(p.layout), &p.columns)
 }
 
 /// The base-p Faure points of `generate --seq faure:base=P` (P prime, not a power of two),

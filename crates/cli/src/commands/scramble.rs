@@ -1,6 +1,6 @@
 //! `gartowen scramble`: scramble the user's own points or words with a registry scrambler.
 
-use super::generate::{format_of, radix_rows, write_npy, write_text, PointFormat, RowSource};
+use super::generate::{column_rows, format_of, radix_rows, write_npy, write_text, PointFormat};
 use crate::input::{read_points, read_points_typed, FloatWords, InputFormat};
 use crate::output::write_atomically;
 use crate::CliError;
@@ -114,19 +114,7 @@ pub fn run(a: ScrambleArgs) -> Result<ExitCode, CliError> {
             col
         })
         .collect();
-    let src = RowSource {
-        width,
-        radix: None,
-        dims: points.dims(),
-        count: points.len() as u64,
-        block: Box::new(|first, buf| {
-            for (i, row) in buf.chunks_exact_mut(columns.len()).enumerate() {
-                for (j, x) in row.iter_mut().enumerate() {
-                    *x = columns[j][first as usize + i];
-                }
-            }
-        }),
-    };
+    let src = column_rows(width, None, &columns);
     write_atomically(a.output.as_deref(), |out| match format {
         PointFormat::Npy => write_npy(&src, a.words, out),
         PointFormat::Csv | PointFormat::Hex => write_text(&src, format, a.words, out),
