@@ -16,6 +16,15 @@ pub enum LevelArg {
     Exhaustive,
 }
 
+/// Which bases the nets check uses.
+#[derive(Clone, Copy, Debug, clap::ValueEnum, PartialEq, Eq)]
+pub enum NetBases {
+    /// The base and every base 2^(kq) ≤ 256 it is nested in.
+    Nested,
+    /// The base alone.
+    Own,
+}
+
 /// Run the conformance battery. Structure is checked exactly: inverse (injectivity for external
 /// programs), nestedness (inspector), net preservation in the scrambling base. Randomness is
 /// checked by laws over independent seeds:
@@ -72,15 +81,6 @@ pub enum LevelArg {
 /// TOST with a stated margin; the seeds used are printed and in the JSON):
 ///   gartowen verify --impl art-owen-16p --equivalent-to owen --margin 0.1
 ///   gartowen verify --external ./owen_nested --base 16 --equivalent-to owen --equivalence-seeds 4000
-/// Which bases the nets check uses.
-#[derive(Clone, Copy, Debug, clap::ValueEnum, PartialEq, Eq)]
-pub enum NetBases {
-    /// The base and every base 2^(kq) ≤ 256 it is nested in.
-    Nested,
-    /// The base alone.
-    Own,
-}
-
 #[derive(Args, Debug)]
 #[command(verbatim_doc_comment)]
 #[command(group(clap::ArgGroup::new("program").args(["external", "list_requests"]).multiple(true)))]
