@@ -107,11 +107,12 @@ impl fmt::Display for CoreError {
                     f,
                     "base {b} is a power of two above 256: bases 2^q go up to 256 (q ≤ 8)"
                 ),
-                b if *b > 65535 => write!(f, "base {b} is above 65535, the largest base served"),
-                b => write!(
+                b if b.is_power_of_two() => write!(
                     f,
                     "base {b} is a power of two: its digits are bits (base 2^q), not base-b integers"
                 ),
+                b if *b > 65535 => write!(f, "base {b} is above 65535, the largest base served"),
+                b => write!(f, "base {b} is not served as base-b digit integers"),
             },
             CoreError::RadixTooLarge { base, width } => {
                 write!(f, "not one base-{base} digit fits a {width}-bit word")

@@ -229,6 +229,10 @@ mod tests {
         );
         assert!(why(65_537).contains("above 65535"), "{}", why(65_537));
         assert!(why(16).contains("digits are bits"), "{}", why(16));
+        assert!(why(256).contains("digits are bits"), "{}", why(256));
+        // The largest base served is not "above" itself (the error is built by hand here).
+        let at_limit = CoreError::InvalidRadix(65_535).to_string();
+        assert!(!at_limit.contains("above"), "{at_limit}");
     }
 
     #[test]
