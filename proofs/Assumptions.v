@@ -1,7 +1,7 @@
 (** Every main theorem must be closed under the global context (no axioms, no admits), except
     the floating-point theorems of [Float.v], whose real numbers rest on the standard axioms of
     Coq's classical reals (listed in README.md; check.sh allows exactly those). *)
-From Gartowen Require Import Nested NetMonotone Factor Counterexample Art ArtWord Binary Laws Symmetric NodeLaws.
+From Gartowen Require Import Nested Checker NetMonotone Factor Counterexample Art ArtWord Binary Laws Symmetric NodeLaws.
 
 Print Assumptions factorization_unique.
 Print Assumptions factorization_bijective.
@@ -25,6 +25,16 @@ Print Assumptions count_scrambled.
 Print Assumptions net_preserved.
 Print Assumptions sequence_preserved.
 Print Assumptions net_monotone.
+Print Assumptions pigeonhole.
+Print Assumptions key_eq_iff.
+Print Assumptions In_comps.
+Print Assumptions level_any_none.
+Print Assumptions check_level_correct.
+Print Assumptions check_net_correct.
+Print Assumptions t_value_correct.
+Print Assumptions t_value_threshold.
+Print Assumptions check_sequence_correct.
+Print Assumptions check_sequence_is_sequence.
 Print Assumptions net_monotone_le.
 Print Assumptions art_is_nested_scramble.
 Print Assumptions art_preserves_nets.

@@ -9,7 +9,7 @@
 
 From Coq Require Import List Arith Bool Lia.
 Import ListNotations.
-From Gartowen Require Import Laws Symmetric Nested.
+From Gartowen Require Import Laws Symmetric Nested Checker.
 
 Section Monotone.
 
@@ -169,6 +169,19 @@ Theorem net_monotone_le : forall n m t t' s Ps, t <= t' -> t' <= m -> m - t <= s
 Proof.
   intros n m t t' s Ps H1 H2 R N. revert H2. induction H1 as [|t' H1 IH]; intro H2; auto.
   apply net_monotone; [lia | lia | apply IH; lia].
+Qed.
+
+(** The checker's t-value is a threshold: the set is a [(t,m,s)]-net for every [t] from the
+    value [t_value] returns up to [m], and for none below it ([Checker.t_value_correct]). *)
+Theorem t_value_threshold : forall n m s Ps, 1 < b -> 0 < s -> m <= n -> length Ps = b ^ m ->
+  Forall (well_formed b n s) Ps ->
+  forall t, t <= m -> (is_net b n m t s Ps <-> t_value b m s Ps <= t).
+Proof.
+  intros n m s Ps B S M L W t T.
+  destruct (t_value_correct b n m s Ps B M L W) as [R1 [R2 R3]]. split.
+  - intro N. destruct (Nat.le_gt_cases (t_value b m s Ps) t) as [G|G]; auto.
+    exfalso. exact (R3 t G N).
+  - intro G. apply (net_monotone_le n m (t_value b m s Ps) t s Ps); auto. nia.
 Qed.
 
 End Monotone.
