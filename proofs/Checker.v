@@ -38,13 +38,15 @@ Variables (A : Type) (kf : A -> nat) (T : nat).
 Definition cnt_key (k : nat) (l : list A) : nat := length (filter (fun y => kf y =? k) l).
 
 (** The running histogram [h]: each point adds one to its key's count, and the first point whose
-    count passes [T] is returned (the Rust loop's [bad_key], found at that point). *)
+    count passes [T] is returned (the Rust loop's [bad_key], found at that point). The key is
+    bound once per point ([let]), so the extracted scan does not recompute it on every lookup. *)
 Fixpoint scan (h : nat -> nat) (l : list A) : option A :=
   match l with
   | [] => None
   | x :: r =>
-      if T <? h (kf x) + 1 then Some x
-      else scan (fun k => if k =? kf x then h (kf x) + 1 else h k) r
+      let k := kf x in
+      if T <? h k + 1 then Some x
+      else scan (fun k' => if k' =? k then h k + 1 else h k') r
   end.
 
 Lemma scan_none : forall l h,
@@ -153,27 +155,27 @@ Variable b : nat.
 
 (** The value of a digit string, most significant first: [floor(x·b^K)] for the first [K]
     digits of a point's coordinate. *)
-Definition val (x : list nat) : nat := fold_left (fun a d => a * b + d) x 0.
+Definition digit_value (x : list nat) : nat := fold_left (fun a d => a * b + d) x 0.
 
-Lemma fold_val : forall y a, fold_left (fun a d => a * b + d) y a = a * b ^ length y + val y.
+Lemma fold_val : forall y a, fold_left (fun a d => a * b + d) y a = a * b ^ length y + digit_value y.
 Proof.
-  unfold val. induction y as [|d y IH]; intro a; simpl; [lia|].
+  unfold digit_value. induction y as [|d y IH]; intro a; simpl; [lia|].
   rewrite (IH (a * b + d)), (IH d). nia.
 Qed.
 
-Lemma val_app : forall x y, val (x ++ y) = val x * b ^ length y + val y.
-Proof. intros x y. unfold val at 1. rewrite fold_left_app. apply fold_val. Qed.
+Lemma val_app : forall x y, digit_value (x ++ y) = digit_value x * b ^ length y + digit_value y.
+Proof. intros x y. unfold digit_value at 1. rewrite fold_left_app. apply fold_val. Qed.
 
-Lemma val_cons : forall d y, val (d :: y) = d * b ^ length y + val y.
+Lemma val_cons : forall d y, digit_value (d :: y) = d * b ^ length y + digit_value y.
 Proof. intros d y. apply (val_app [d] y). Qed.
 
-Lemma val_lt : forall y, valid b y -> val y < b ^ length y.
+Lemma val_lt : forall y, valid b y -> digit_value y < b ^ length y.
 Proof.
-  induction y as [|d y IH]; intro H; [unfold val; simpl; lia|].
+  induction y as [|d y IH]; intro H; [unfold digit_value; simpl; lia|].
   inversion H; subst. rewrite val_cons. simpl. specialize (IH H3). nia.
 Qed.
 
-Lemma val_inj : forall x y, valid b x -> valid b y -> length x = length y -> val x = val y -> x = y.
+Lemma val_inj : forall x y, valid b x -> valid b y -> length x = length y -> digit_value x = digit_value y -> x = y.
 Proof.
   induction x as [|d x IH]; intros [|e y] Hx Hy L V; simpl in L; try discriminate; auto.
   inversion Hx; inversion Hy; subst. rewrite !val_cons in V. injection L as L.
@@ -188,7 +190,7 @@ Proof. intros B k. apply Nat.pow_nonzero. lia. Qed.
 (** The cut of [box_keys.rs]: the digit [a = floor(x·b^d)] of a shape is the prefix at depth
     [K] divided by [b^(K−d)]. *)
 Lemma cut_prefix : forall x d K, 1 < b -> valid b x -> d <= K -> K <= length x ->
-  val (firstn K x) / b ^ (K - d) = val (firstn d x).
+  digit_value (firstn K x) / b ^ (K - d) = digit_value (firstn d x).
 Proof.
   intros x d K B V D L.
   replace (firstn K x) with (firstn d x ++ firstn (K - d) (skipn d x)).
@@ -379,17 +381,17 @@ Qed.
 
 (** ** Box keys. *)
 
-(** The mixed-radix number of a box: [Σ_j val(p_j) · b^(Σ_{i>j} d_i)]. *)
+(** The mixed-radix number of a box: [Σ_j digit_value(p_j) · b^(Σ_{i>j} d_i)]. *)
 Fixpoint box_number (B : list (list nat)) : nat :=
   match B with
   | [] => 0
-  | p :: B' => val p * b ^ sum (shape B') + box_number B'
+  | p :: B' => digit_value p * b ^ sum (shape B') + box_number B'
   end.
 
 (** The key of [box_keys.rs] at depth [K]: each shape digit cut from the prefix at depth [K]. *)
 Fixpoint key (K : nat) (sh : list nat) (P : list (list nat)) : nat :=
   match sh, P with
-  | d :: sh', x :: P' => val (firstn K x) / b ^ (K - d) * b ^ sum sh' + key K sh' P'
+  | d :: sh', x :: P' => digit_value (firstn K x) / b ^ (K - d) * b ^ sum sh' + key K sh' P'
   | _, _ => 0
   end.
 
@@ -405,8 +407,8 @@ Proof.
   induction B as [|p B IH]; intros [|r C] VB VC S E; simpl in *; try discriminate; auto.
   inversion VB; inversion VC; subst. injection S as L S. rewrite <- S in E.
   pose proof (box_number_lt B H2). pose proof (box_number_lt C H6). rewrite <- S in H0.
-  assert (val p = val r) as V.
-  { destruct (Nat.lt_trichotomy (val p) (val r)) as [D|[D|D]]; auto; nia. }
+  assert (digit_value p = digit_value r) as V.
+  { destruct (Nat.lt_trichotomy (digit_value p) (digit_value r)) as [D|[D|D]]; auto; nia. }
   assert (box_number B = box_number C) by (rewrite V in E; lia).
   f_equal; [apply val_inj; auto | apply IH; auto].
 Qed.

@@ -1,5 +1,6 @@
 (** Extraction of the ART word loop ([ArtWord.art_word]), the nested-scramble action
-    ([Nested.scramble]) and the box count ([Nested.count]) to OCaml, for the differential test
+    ([Nested.scramble]), the box count ([Nested.count]) and the counting net checker
+    ([Checker.check_net], [t_value], [check_sequence]) to OCaml, for the differential test
     against the Rust code ([tests/extracted_differential.rs], driver in [extracted/driver.ml]).
 
     Trusted beyond Coq's extraction: [nat] is OCaml's [int] ([ExtrOcamlNatInt]; every value here
@@ -9,11 +10,13 @@
     binary [N]. *)
 
 From Coq Require Import Extraction ExtrOcamlBasic ExtrOcamlNatInt NArith.
-From Gartowen Require Import Nested ArtWord.
+From Gartowen Require Import Nested Checker ArtWord.
 
 (** The Rust scramble of dimension [j]: [ART_root(x ⊕ A_j) ⊕ D_j] on [W]-bit words. *)
 Definition art_word_dim (q W : nat) (child psi : nat -> nat -> nat) (code64 : nat -> N)
   (root : nat) (a d x : N) : N :=
   N.lxor (art_word q W child psi code64 root (N.lxor x a)) d.
 
-Extraction "gartowen_extracted.ml" art_word_dim scramble count N.of_nat N.eqb N.lor N.shiftl.
+Extraction "gartowen_extracted.ml" art_word_dim scramble count
+  check_net t_value check_sequence comps digit_value box_of
+  N.of_nat N.eqb N.lor N.shiftl.

@@ -24,8 +24,16 @@ use std::fmt::Write as _;
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
+use std::sync::OnceLock;
 
-fn driver() -> Option<PathBuf> {
+/// The differential driver, built once per test run by `proofs/extract.sh` (the checker's
+/// test shares it); `None` when `GARTOWEN_SKIP_PROOFS=1` and it cannot be built.
+pub(crate) fn driver() -> Option<PathBuf> {
+    static DRIVER: OnceLock<Option<PathBuf>> = OnceLock::new();
+    DRIVER.get_or_init(build_driver).clone()
+}
+
+fn build_driver() -> Option<PathBuf> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let out = root.join("target").join("extracted");
     let status = Command::new(root.join("proofs").join("extract.sh"))
@@ -45,20 +53,20 @@ fn driver() -> Option<PathBuf> {
 }
 
 /// Runs the driver on `input`; returns (success, stdout, stderr).
-fn run_driver(driver: &Path, input: &str) -> (bool, String, String) {
+pub(crate) fn run_driver(driver: &Path, input: &str) -> (bool, String, String) {
     let mut child = Command::new(driver)
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
         .expect("the driver starts");
-    child
-        .stdin
-        .take()
-        .unwrap()
-        .write_all(input.as_bytes())
-        .expect("the driver reads its input");
+    // Written from a thread of its own: the driver answers as it reads, and an answer larger
+    // than the pipe's buffer would block it while this side still writes.
+    let mut stdin = child.stdin.take().unwrap();
+    let input = input.to_owned();
+    let writer = std::thread::spawn(move || stdin.write_all(input.as_bytes()));
     let out = child.wait_with_output().unwrap();
+    writer.join().unwrap().expect("the driver reads its input");
     (
         out.status.success(),
         String::from_utf8_lossy(&out.stdout).into_owned(),

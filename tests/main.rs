@@ -5,6 +5,7 @@ mod art_golden;
 mod batch_paths;
 mod expected_discrepancy;
 mod external;
+mod extracted_checker;
 mod extracted_differential;
 mod f32_exhaustive;
 mod house_check;

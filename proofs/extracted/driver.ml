@@ -19,7 +19,19 @@
        shape L_1..L_S H  C_1 M_1 .. C_H M_H
                                  Rust's histogram: M_i boxes of the shape hold C_i points
        endnet
-     done *)
+     checker B S N NPTS          one point set for the counting net checker (Checker.v)
+       pt ...                    S*N digits
+       net M T | tval M | seq T MAXM    queries, each answered on a line of its own:
+         answer net M T holds SHAPES
+         answer net M T fails POS shape D,.. box A,.. count C
+         answer tval M T
+         answer seq T MAXM holds BLOCKS SHAPES
+         answer seq T MAXM fails BLOCKS SHAPES at K block I shape D,.. box A,.. count C
+       endchecker
+     done
+   The checker's answers are compared by the Rust test, not here; POS, BLOCKS and SHAPES are
+   the report's counters (failing shape's position, blocks and shapes examined), derived from
+   the extracted shape list. *)
 
 open Gartowen_extracted
 
@@ -159,17 +171,84 @@ let net_section () =
   loop ();
   Printf.printf "net b=%d s=%d N=%d: %d shapes\n" b s npts !shapes
 
+let checkers = ref 0
+let ints l = String.concat "," (List.map string_of_int l)
+let rec pow b k = if k = 0 then 1 else b * pow b (k - 1)
+let rec position x = function
+  | [] -> fail "a failing shape is not among the shapes"
+  | y :: r -> if y = x then 0 else 1 + position x r
+
+(* Shape, box index (the value of each coordinate's box digits) and count of a failure. *)
+let failure_text b pts (sh, p) =
+  let bx = box_of sh p in
+  Printf.sprintf "shape %s box %s count %d" (ints sh) (ints (List.map (digit_value b) bx)) (count bx pts)
+
+let checker_section () =
+  let b = int_tok () in
+  let s = int_tok () in
+  let n = int_tok () in
+  let npts = int_tok () in
+  let pts =
+    List.init npts (fun _ ->
+        if token () <> "pt" then fail "expected pt";
+        List.init s (fun _ -> List.init n (fun _ -> int_tok ())))
+  in
+  let rec loop () =
+    match token () with
+    | "endchecker" -> ()
+    | "net" ->
+        let m = int_tok () in
+        let t = int_tok () in
+        let shapes = comps (m - t) s in
+        (match check_net b m t s pts with
+         | None -> Printf.printf "answer net %d %d holds %d\n" m t (List.length shapes)
+         | Some (sh, p) ->
+             Printf.printf "answer net %d %d fails %d %s\n" m t (position sh shapes + 1)
+               (failure_text b pts (sh, p)));
+        loop ()
+    | "tval" ->
+        let m = int_tok () in
+        Printf.printf "answer tval %d %d\n" m (t_value b m s pts);
+        loop ()
+    | "seq" ->
+        let t = int_tok () in
+        let maxm = int_tok () in
+        let blocks m = npts / pow b m in
+        let shapes m = List.length (comps (m - t) s) in
+        (* blocks and block-shapes of every level below k, all of which passed *)
+        let rec below k acc_b acc_s =
+          if k <= t then (acc_b, acc_s)
+          else below (k - 1) (acc_b + blocks (k - 1)) (acc_s + blocks (k - 1) * shapes (k - 1))
+        in
+        (match check_sequence b t maxm s pts with
+         | None ->
+             let bs, ss = below (maxm + 1) 0 0 in
+             Printf.printf "answer seq %d %d holds %d %d\n" t maxm bs ss
+         | Some (k, (i, (sh, p))) ->
+             let bs, ss = below k 0 0 in
+             let pos = position sh (comps (k - t) s) in
+             Printf.printf "answer seq %d %d fails %d %d at %d block %d %s\n" t maxm
+               (bs + i + 1) (ss + i * shapes k + pos + 1) k i
+               (failure_text b (block b k i pts) (sh, p)));
+        loop ()
+    | t -> fail ("unexpected token in checker section: " ^ t)
+  in
+  loop ();
+  incr checkers
+
 let () =
   let rec sections () =
     match token () with
     | "art" -> art_section (); sections ()
     | "act" -> act_section (); sections ()
     | "net" -> net_section (); sections ()
+    | "checker" -> checker_section (); sections ()
     | "done" -> ()
     | t -> fail ("unexpected token: " ^ t)
   in
   (try sections () with Scanf.Scan_failure m | Failure m -> fail ("malformed input: " ^ m)
                      | End_of_file -> fail "input ends before done");
   Printf.printf "act: %d words\n" !acts;
+  Printf.printf "checker: %d point sets\n" !checkers;
   Printf.printf "mismatches %d\n" !mismatches;
   exit (if !mismatches = 0 then 0 else 1)
