@@ -1,7 +1,7 @@
 (** Every main theorem must be closed under the global context (no axioms, no admits), except
     the floating-point theorems of [Float.v], whose real numbers rest on the standard axioms of
     Coq's classical reals (listed in README.md; check.sh allows exactly those). *)
-From Gartowen Require Import Nested Checker NetMonotone Factor Counterexample Art ArtWord Binary Laws Symmetric NodeLaws.
+From Gartowen Require Import Nested Boxes Checker NetMonotone Factor Counterexample Art ArtWord Binary Laws Symmetric NodeLaws.
 
 Print Assumptions factorization_unique.
 Print Assumptions factorization_bijective.

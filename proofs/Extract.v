@@ -10,7 +10,7 @@
     binary [N]. *)
 
 From Coq Require Import Extraction ExtrOcamlBasic ExtrOcamlNatInt NArith.
-From Gartowen Require Import Nested Checker ArtWord.
+From Gartowen Require Import Nested Boxes Checker ArtWord.
 
 (** The Rust scramble of dimension [j]: [ART_root(x ⊕ A_j) ⊕ D_j] on [W]-bit words. *)
 Definition art_word_dim (q W : nat) (child psi : nat -> nat -> nat) (code64 : nat -> N)
