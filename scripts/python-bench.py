@@ -4,9 +4,10 @@
 1. gartowen.discrepancy against scipy.stats.qmc.discrepancy (L2-star) on scrambled Sobol:
    2-D 2^16 points and 16-D 2^14 points, with each one's relative error against the exact
    value (gartowen's exact rational method; 2-D through the O(N log N) exact path).
-2. gartowen.verify on a NumPy per-bit Owen scramble (python/tests/scramblers.py), split into
-   the time inside the Python function and the rest, against the same battery on its built-in
-   twin `owen-per-bit-hash` (`gartowen verify --impl owen-per-bit-hash`, release build).
+2. gartowen.verify on a NumPy per-bit Owen scramble (python/tests/scramblers.py), many seeds
+   per call (batch_seeds=True) and one seed per call, each split into the time inside the
+   Python function and the rest, against the same battery on its built-in twin
+   `owen-per-bit-hash` (`gartowen verify --level quick --impl owen-per-bit-hash`, release).
 
 Run: target/pyvenv/bin/python scripts/python-bench.py target/release/gartowen
 (after scripts/python-tests.sh and cargo build --release -p gartowen-cli)
@@ -57,16 +58,18 @@ def discrepancy_rows():
     return rows
 
 
-def verify_split():
+def verify_split(batch_seeds):
     sys.path.insert(0, "python/tests")
     from scramblers import owen_per_bit
 
     level = "quick"
     t = time.perf_counter()
-    native = gartowen.verify(owen_per_bit, 2, 32, level=level, claims="owen", expect="owen-per-bit-hash")
+    native = gartowen.verify(owen_per_bit, 2, 32, level=level, claims="owen",
+                             expect="owen-per-bit-hash", batch_seeds=batch_seeds)
     total = time.perf_counter() - t
     return {
         "level": level,
+        "batch_seeds": batch_seeds,
         "numpy_owen_total_s": total,
         "inside_python_fn_s": native.python_seconds,
         "battery_overhead_s": total - native.python_seconds,
@@ -82,15 +85,19 @@ def builtin_battery_seconds(cli):
 
     with tempfile.TemporaryDirectory() as d:
         t = time.perf_counter()
-        subprocess.run([cli, "verify", "--impl", "owen-per-bit-hash", "--json", f"{d}/v.json"],
+        subprocess.run([cli, "verify", "--level", "quick", "--impl", "owen-per-bit-hash", "--json", f"{d}/v.json"],
                        check=False, capture_output=True)
         return time.perf_counter() - t
 
 
 if __name__ == "__main__":
-    report = {"discrepancy": discrepancy_rows(), "verify": verify_split()}
+    report = {"discrepancy": discrepancy_rows(), "verify": verify_split(True),
+              "verify_one_seed_per_call": verify_split(False)}
     cli = sys.argv[1] if len(sys.argv) > 1 else "target/release/gartowen"
-    report["verify"]["builtin_twin_battery_s"] = builtin_battery_seconds(cli)
-    v = report["verify"]
-    v["overhead_over_twin"] = v["battery_overhead_s"] / v["builtin_twin_battery_s"]
+    twin = builtin_battery_seconds(cli)
+    for key in ["verify", "verify_one_seed_per_call"]:
+        v = report[key]
+        v["builtin_twin_battery_s"] = twin
+        v["overhead_over_twin"] = v["battery_overhead_s"] / twin
+        v["total_over_twin"] = v["numpy_owen_total_s"] / twin
     print(json.dumps(report, indent=2))

@@ -47,18 +47,39 @@ def seed_key(seed, dim):
     return np.uint64(hash_words_int(seed, dim))
 
 
+def _mix64_inplace(z, tmp):
+    """mix64 written into z, with tmp (same shape) as scratch: no temporaries per step."""
+    for shift, mult in ((30, _M1), (27, _M2), (31, None)):
+        np.right_shift(z, np.uint64(shift), out=tmp)
+        np.bitwise_xor(z, tmp, out=z)
+        if mult is not None:
+            np.multiply(z, mult, out=z)
+
+
 def owen_per_bit(words, dim, seed):
     """Elementwise in (words, seed): with a (rows, 1) array of seeds and (rows, n) words, row i
-    is seed i's scramble (``gartowen.verify(..., batch_seeds=True)``)."""
+    is seed i's scramble (``gartowen.verify(..., batch_seeds=True)``). Written in place (one
+    scratch pair of arrays for all 32 or 64 levels) because the battery calls it with millions
+    of words."""
     width = 32 if words.dtype == np.uint32 else 64
     x = words.astype(np.uint64)
     key = seed_key(seed, dim)
     y = x.copy()
+    z = np.empty(np.broadcast(x, key).shape, dtype=np.uint64)
+    tmp = np.empty_like(z)
     for k in range(width):
-        prefix = x >> np.uint64(width - k) if k else np.zeros_like(x)
-        level = np.uint64((k << 58) & MASK)
-        flip = mix64(key ^ mix64(level ^ prefix)) & np.uint64(1)
-        y ^= flip << np.uint64(width - 1 - k)
+        # z = mix64(key ^ mix64(level ^ prefix)) & 1, prefix the top k bits of x.
+        if k:
+            np.right_shift(x, np.uint64(width - k), out=z)
+        else:
+            z.fill(0)
+        np.bitwise_xor(z, np.uint64((k << 58) & MASK), out=z)
+        _mix64_inplace(z, tmp)
+        np.bitwise_xor(z, key, out=z)
+        _mix64_inplace(z, tmp)
+        np.bitwise_and(z, np.uint64(1), out=z)
+        np.left_shift(z, np.uint64(width - 1 - k), out=z)
+        np.bitwise_xor(y, z, out=y)
     return y.astype(words.dtype)
 
 
