@@ -1,7 +1,7 @@
 (** Every main theorem must be closed under the global context (no axioms, no admits), except
     the floating-point theorems of [Float.v], whose real numbers rest on the standard axioms of
     Coq's classical reals (listed in README.md; check.sh allows exactly those). *)
-From Gartowen Require Import Nested Boxes Checker NetMonotone Factor Counterexample Art ArtWord Binary Laws Symmetric NodeLaws.
+From Gartowen Require Import Nested Boxes Checker NetMonotone Factor Counterexample Art ArtWord Binary Laws Symmetric NodeLaws ArtMarginal.
 
 Print Assumptions factorization_unique.
 Print Assumptions factorization_bijective.
@@ -19,6 +19,16 @@ Print Assumptions translations_not_two_transitive.
 Print Assumptions affine_is_symmetric_q1.
 Print Assumptions affine_is_symmetric_q2.
 Print Assumptions transposition_not_affine.
+Print Assumptions shift_absorbs.
+Print Assumptions node_law_as_built.
+Print Assumptions node_count_by_translation.
+Print Assumptions translation_node_law.
+Print Assumptions permutation_node_law.
+Print Assumptions affine_node_law.
+Print Assumptions art_owen_2_node_law.
+Print Assumptions q_art_4_node_law.
+Print Assumptions Sb_lists_each_bijection_once.
+Print Assumptions symmetric_node_law.
 Print Assumptions prefix_class_image.
 Print Assumptions prefix_class_onto.
 Print Assumptions count_scrambled.
