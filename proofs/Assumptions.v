@@ -1,7 +1,7 @@
 (** Every main theorem must be closed under the global context (no axioms, no admits), except
     the floating-point theorems of [Float.v], whose real numbers rest on the standard axioms of
     Coq's classical reals (listed in README.md; check.sh allows exactly those). *)
-From Gartowen Require Import Nested Boxes Checker NetMonotone Factor Counterexample Art ArtWord Binary Laws Symmetric NodeLaws ArtMarginal.
+From Gartowen Require Import Nested Boxes Checker NetMonotone Factor Counterexample Art ArtWord Binary Laws Symmetric NodeLaws ArtMarginal Affine.
 
 Print Assumptions factorization_unique.
 Print Assumptions factorization_bijective.
@@ -29,6 +29,9 @@ Print Assumptions art_owen_2_node_law.
 Print Assumptions q_art_4_node_law.
 Print Assumptions Sb_lists_each_bijection_once.
 Print Assumptions symmetric_node_law.
+Print Assumptions affine_pair_count.
+Print Assumptions affine_two_transitive.
+Print Assumptions agl4_two_transitive.
 Print Assumptions prefix_class_image.
 Print Assumptions prefix_class_onto.
 Print Assumptions count_scrambled.
