@@ -1,7 +1,7 @@
 (** Every main theorem must be closed under the global context (no axioms, no admits), except
     the floating-point theorems of [Float.v], whose real numbers rest on the standard axioms of
     Coq's classical reals (listed in README.md; check.sh allows exactly those). *)
-From Gartowen Require Import Nested Boxes Checker NetMonotone Factor Counterexample Art ArtWord Binary Laws Symmetric NodeLaws ArtMarginal Affine.
+From Gartowen Require Import Nested Boxes Checker NetMonotone Factor Counterexample Art ArtWord Binary Laws Symmetric NodeLaws ArtMarginal Affine Rank.
 
 Print Assumptions factorization_unique.
 Print Assumptions factorization_bijective.
@@ -32,6 +32,9 @@ Print Assumptions symmetric_node_law.
 Print Assumptions affine_pair_count.
 Print Assumptions affine_two_transitive.
 Print Assumptions agl4_two_transitive.
+Print Assumptions fibre_is_kernel_size.
+Print Assumptions fibres_sum.
+Print Assumptions balanced_iff_onto.
 Print Assumptions prefix_class_image.
 Print Assumptions prefix_class_onto.
 Print Assumptions count_scrambled.

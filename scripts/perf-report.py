@@ -89,7 +89,7 @@ def timed(cmd, env=None):
 
 
 def criterion():
-    log("criterion: scramblers bench (about 3 minutes after the build)")
+    log("criterion: scramblers bench (about 6 minutes after the build)")
     sh(["cargo", "bench", "-q", "-p", "gartowen-bench", "--bench", "scramblers", "--",
         "scramble", "--warm-up-time", "1", "--measurement-time", "3"],
        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
