@@ -35,6 +35,8 @@ Print Assumptions agl4_two_transitive.
 Print Assumptions fibre_is_kernel_size.
 Print Assumptions fibres_sum.
 Print Assumptions balanced_iff_onto.
+Print Assumptions parity_key.
+Print Assumptions dependent_rows_miss_keys.
 Print Assumptions prefix_class_image.
 Print Assumptions prefix_class_onto.
 Print Assumptions count_scrambled.

@@ -6,8 +6,9 @@
     same number of points) exactly when [K] hits every key ([balanced_iff_onto]): each key's
     fibre is a coset of the kernel ([fibre_is_kernel_size]), so all nonempty fibres are equal,
     and the [2^k] fibres sum to [2^m] ([fibres_sum]). The rank path (`crates/netcheck`) decides
-    "onto" by the rank of the stacked rows (an onto map to [k] bits has rank [k]); that step is
-    linear algebra and is not proved here, nor that the Rust key is the digital net's. *)
+    "onto" by the rank of the stacked rows: dependent rows leave keys unhit
+    ([dependent_rows_miss_keys], below), so its "fails" is sound; that independent rows make
+    the key onto, and that the Rust key is the digital net's, are not proved here. *)
 
 From Coq Require Import List Arith Bool Lia Permutation.
 From Gartowen Require Import Laws ArtWord NodeLaws Symmetric ArtMarginal.
@@ -103,3 +104,93 @@ Proof.
 Qed.
 
 End Linear.
+
+(** ** Dependent rows leave keys unhit: the rank path's "fails" is sound
+
+    Rows are masks over [n] index bits; bit j of a key is the GF(2) dot product of row j with
+    the index. When a nonempty subset of the stacked rows XORs to zero (the rank path's XOR
+    basis rejects a row), the key bits of that subset always XOR to zero, so every key whose
+    bits there XOR to one is hit by no index: the key map is not onto and the shape fails
+    ([dependent_rows_miss_keys]; with keys read as numbers, [balanced_iff_onto]). The converse
+    (independent rows make the key onto) is not proved here. *)
+
+Definition dot (n r i : nat) : bool :=
+  fold_right xorb false (map (fun c => Nat.testbit r c && Nat.testbit i c) (seq 0 n)).
+
+Lemma fold_xorb_map : forall (f g : nat -> bool) l,
+  fold_right xorb false (map (fun c => xorb (f c) (g c)) l) =
+  xorb (fold_right xorb false (map f l)) (fold_right xorb false (map g l)).
+Proof.
+  intros f g l. induction l as [|c l IH]; simpl; [reflexivity|]. rewrite IH.
+  destruct (f c), (g c), (fold_right xorb false (map f l)), (fold_right xorb false (map g l));
+    reflexivity.
+Qed.
+
+Lemma dot_lxor : forall n r r' i, dot n (Nat.lxor r r') i = xorb (dot n r i) (dot n r' i).
+Proof.
+  intros n r r' i. unfold dot. rewrite <- fold_xorb_map. f_equal. apply map_ext. intro c.
+  rewrite Nat.lxor_spec. destruct (Nat.testbit r c), (Nat.testbit r' c), (Nat.testbit i c);
+    reflexivity.
+Qed.
+
+Lemma dot_zero : forall n i, dot n 0 i = false.
+Proof.
+  intros n i. unfold dot. induction (seq 0 n) as [|c l IH]; simpl; [reflexivity|].
+  rewrite IH, Nat.bits_0. reflexivity.
+Qed.
+
+(** The key of index [i]: one bit per row. *)
+Definition key (n : nat) (rows : list nat) (i : nat) : list bool := map (fun r => dot n r i) rows.
+
+(** The XOR of the selected rows, and the parity of a key's selected bits. *)
+Fixpoint xor_sel (sel : list bool) (rows : list nat) : nat :=
+  match sel, rows with
+  | b :: sel', r :: rows' => if b then Nat.lxor r (xor_sel sel' rows') else xor_sel sel' rows'
+  | _, _ => 0
+  end.
+
+Fixpoint parity (sel y : list bool) : bool :=
+  match sel, y with
+  | b :: sel', v :: y' => xorb (b && v) (parity sel' y')
+  | _, _ => false
+  end.
+
+Lemma parity_key : forall n sel rows i, parity sel (key n rows i) = dot n (xor_sel sel rows) i.
+Proof.
+  intros n sel. induction sel as [|b sel IH]; intros rows i; simpl.
+  - symmetry. apply dot_zero.
+  - destruct rows as [|r rows]; simpl; [symmetry; apply dot_zero|].
+    rewrite IH. destruct b; simpl.
+    + rewrite dot_lxor. reflexivity.
+    + destruct (dot n (xor_sel sel rows) i); reflexivity.
+Qed.
+
+(** The key with one bit set, at the first selected row. *)
+Fixpoint first_one (sel : list bool) : list bool :=
+  match sel with
+  | [] => []
+  | true :: r => true :: map (fun _ => false) r
+  | false :: r => false :: first_one r
+  end.
+
+Lemma parity_zeros : forall sel (l : list bool), parity sel (map (fun _ => false) l) = false.
+Proof.
+  induction sel as [|b sel IH]; intros [|x l]; simpl; auto. rewrite IH, andb_false_r. reflexivity.
+Qed.
+
+Lemma first_one_spec : forall sel, existsb (fun b => b) sel = true ->
+  length (first_one sel) = length sel /\ parity sel (first_one sel) = true.
+Proof.
+  induction sel as [|b sel IH]; simpl; [discriminate|]. intro H. destruct b; simpl.
+  - rewrite map_length, parity_zeros. split; reflexivity.
+  - destruct (IH H) as [L P]. rewrite L, P. split; reflexivity.
+Qed.
+
+Theorem dependent_rows_miss_keys : forall n rows sel,
+  length sel = length rows -> existsb (fun b => b) sel = true -> xor_sel sel rows = 0 ->
+  exists y, length y = length rows /\ forall i, key n rows i <> y.
+Proof.
+  intros n rows sel L S Z. destruct (first_one_spec sel S) as [Ly Py].
+  exists (first_one sel). split; [congruence|].
+  intros i E. rewrite <- E, parity_key, Z, dot_zero in Py. discriminate.
+Qed.
