@@ -12,7 +12,7 @@
     stands and the count over GL(q,2) is not computed here. *)
 
 From Coq Require Import List Arith Bool Lia.
-From Gartowen Require Import Laws ArtWord NodeLaws ArtMarginal.
+From Gartowen Require Import Laws ArtWord NodeLaws Symmetric ArtMarginal.
 Import ListNotations.
 
 (* GL(4,2)'s size is written as a literal; Coq warns that it builds it with of_num_uint. *)
@@ -32,7 +32,7 @@ Lemma affine_pair_count : forall q H d d' e e',
 Proof.
   intros q H d d' e e' HH Hd Hd' He.
   induction H as [|h H IH]; [reflexivity|].
-  unfold art_law in *. simpl. rewrite cnt_app, cnt_map, cnt_cons_b.
+  unfold art_law in *. simpl. rewrite cnt_app, cnt_map, cnt_cons.
   rewrite IH by (intros; apply HH; right; auto). f_equal.
   destruct (HH h (or_introl eq_refl)) as [Mh Lh]. rewrite (Lh d d' Hd Hd').
   rewrite (cnt_ext _ _ (fun t => (Nat.lxor (h d) (h d') =? Nat.lxor e e') &&

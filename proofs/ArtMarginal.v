@@ -73,10 +73,6 @@ Qed.
 Lemma cnt_false : forall A (l : list A), cnt (fun _ => false) l = 0.
 Proof. intros A l. unfold cnt. induction l; simpl; auto. Qed.
 
-Lemma cnt_cons_b : forall A (P : A -> bool) x l,
-  cnt P (x :: l) = (if P x then 1 else 0) + cnt P l.
-Proof. intros. unfold cnt. simpl. destruct (P x); reflexivity. Qed.
-
 (** The output shift absorbs everything: among the [2^q] shift digits, exactly one turns [f]
     into [sigma] when the two differ by a translation, and none otherwise. *)
 Lemma shift_absorbs : forall f sigma, maps_digits q f -> maps_digits q sigma ->
@@ -176,7 +172,7 @@ Lemma art_law_count : forall H sigma, (forall h, In h H -> maps_digits q h) ->
   cnt (fun g => agree g sigma) (art_law q H) = cnt (fun h => differ_by_translation h sigma) H.
 Proof.
   intros H sigma HH Hs. induction H as [|h H IH]; [reflexivity|].
-  unfold art_law in *. simpl. rewrite cnt_app, cnt_map, cnt_cons_b.
+  unfold art_law in *. simpl. rewrite cnt_app, cnt_map, cnt_cons.
   rewrite IH by (intros; apply HH; right; auto). f_equal.
   exact (shift_absorbs h sigma (HH h (or_introl eq_refl)) Hs).
 Qed.
@@ -215,7 +211,7 @@ Proof.
   intros A B P l m. induction l as [|x l IH]; simpl.
   - induction m as [|y m IHm]; simpl; auto.
   - rewrite IH. clear IH. induction m as [|y m IHm]; simpl; auto.
-    rewrite !cnt_cons_b in *. unfold cnt in *. simpl in *.
+    rewrite !cnt_cons in *. unfold cnt in *. simpl in *.
     destruct (P x y); simpl; lia.
 Qed.
 
@@ -272,13 +268,13 @@ Proof.
   { intros h [<-|[]] x Hx. exact Hx. }
   split.
   - rewrite node_count_by_translation by (auto; intros x Hx; apply lxor_lt; assumption).
-    rewrite cnt_cons_b.
+    rewrite cnt_cons.
     replace (differ_by_translation _ _) with true; [unfold cnt; simpl; lia|].
     symmetry. apply agree_spec. intros x _.
     rewrite !Nat.lxor_0_l, Nat.lxor_assoc, <- (Nat.lxor_assoc a x e), (Nat.lxor_comm a x),
       Nat.lxor_assoc, lxor_cancel. reflexivity.
   - intros sigma Hs N. rewrite node_count_by_translation by auto.
-    rewrite cnt_cons_b.
+    rewrite cnt_cons.
     replace (differ_by_translation _ _) with false; [unfold cnt; simpl; lia|].
     symmetry. destruct (differ_by_translation (fun x => Nat.lxor x a) sigma) eqn:E; auto.
     pose proof (differ_after_translation (fun x => x) a sigma) as T. cbv beta in T.
@@ -375,7 +371,7 @@ Proof.
   rewrite forallb_forall in T. specialize (T p Hp). rewrite forallb_forall in T.
   specialize (T a (in_seq0 _ _ Ha)).
   rewrite node_count_by_translation; auto.
-  - rewrite cnt_cons_b, T. unfold cnt. simpl. lia.
+  - rewrite cnt_cons, T. unfold cnt. simpl. lia.
   - intros h [<-|[]] x Hx. exact Hx.
   - assert (M : forallb (fun p => forallb (fun d => fn_of p d <? 2) (seq 0 2))
                   (perms [0; 1]) = true) by (vm_compute; reflexivity).

@@ -16,13 +16,13 @@ Import ListNotations.
 
 Lemma cnt_perm : forall A (P : A -> bool) l l', Permutation l l' -> cnt P l = cnt P l'.
 Proof.
-  intros A P l l' H. induction H; rewrite ?cnt_cons_b; lia.
+  intros A P l l' H. induction H; rewrite ?cnt_cons; lia.
 Qed.
 
 Lemma cnt_pos_exists : forall A (P : A -> bool) l, 0 < cnt P l -> exists x, In x l /\ P x = true.
 Proof.
   intros A P l. induction l as [|a l IH]; intro H; [unfold cnt in H; simpl in H; lia|].
-  rewrite cnt_cons_b in H. destruct (P a) eqn:E.
+  rewrite cnt_cons in H. destruct (P a) eqn:E.
   - exists a. split; [left|]; auto.
   - destruct (IH ltac:(lia)) as [x [Hx Px]]. exists x. split; [right|]; auto.
 Qed.
