@@ -2,6 +2,7 @@
 //! Readable before fast: each one is the definition, written out.
 
 pub mod box_counting;
+pub mod discrepancy_integral;
 pub mod exact_discrepancy;
 pub mod exact_laws;
 pub mod inspector;

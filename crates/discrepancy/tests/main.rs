@@ -4,4 +4,5 @@
 mod bound;
 mod choice;
 mod curves;
+mod definition;
 mod exactness;
