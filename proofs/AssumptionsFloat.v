@@ -1,8 +1,9 @@
-(** The floating-point theorems rest on Coq's classical real numbers (through Flocq): their
+(** The floating-point theorems and the discrepancy closed forms rest on Coq's classical real
+    numbers (which Flocq uses too): their
     [Print Assumptions] may list exactly the four standard axioms that check.sh allows
     (ClassicalDedekindReals.sig_forall_dec, ClassicalDedekindReals.sig_not_dec,
     FunctionalExtensionality.functional_extensionality_dep, Classical_Prop.classic). *)
-From Gartowen Require Import Float DdSum.
+From Gartowen Require Import Float DdSum Discrepancy.
 
 Print Assumptions two_sum_exact.
 Print Assumptions quick_two_sum_exact.
@@ -19,3 +20,7 @@ Print Assumptions to_computed.
 Print Assumptions combine_error.
 Print Assumptions wd_pair_f64_error.
 Print Assumptions fixed_point_exact.
+Print Assumptions separable_closed_form.
+Print Assumptions warnock_formula.
+Print Assumptions gl2_formula.
+Print Assumptions centred_formula.
