@@ -1,7 +1,7 @@
 (** Every main theorem must be closed under the global context (no axioms, no admits), except
     the floating-point theorems of [Float.v], whose real numbers rest on the standard axioms of
     Coq's classical reals (listed in README.md; check.sh allows exactly those). *)
-From Gartowen Require Import Nested Boxes Checker NetMonotone Factor Counterexample Art ArtWord Binary Laws Symmetric NodeLaws ArtMarginal Affine Rank.
+From Gartowen Require Import Nested Boxes Checker NetMonotone Factor Counterexample Art ArtWord Binary Laws Symmetric NodeLaws ArtMarginal Affine Rank RankBasis.
 
 Print Assumptions factorization_unique.
 Print Assumptions factorization_bijective.
@@ -62,3 +62,7 @@ Print Assumptions tail_one_bit_is_symmetric.
 Print Assumptions tail_translations_not_symmetric.
 Print Assumptions binary_is_base_2q_nested.
 Print Assumptions base4_scramble_breaks_binary_net.
+Print Assumptions echelon_onto.
+Print Assumptions add_row_onto_iff.
+Print Assumptions zero_row_not_onto.
+Print Assumptions independent_iff_onto.
