@@ -66,3 +66,4 @@ Print Assumptions echelon_onto.
 Print Assumptions add_row_onto_iff.
 Print Assumptions zero_row_not_onto.
 Print Assumptions independent_iff_onto.
+Print Assumptions independent_iff_balanced.

@@ -7,8 +7,8 @@
     fibre is a coset of the kernel ([fibre_is_kernel_size]), so all nonempty fibres are equal,
     and the [2^k] fibres sum to [2^m] ([fibres_sum]). The rank path (`crates/netcheck`) decides
     "onto" by the rank of the stacked rows: dependent rows leave keys unhit
-    ([dependent_rows_miss_keys], below), so its "fails" is sound; that independent rows make
-    the key onto, and that the Rust key is the digital net's, are not proved here. *)
+    ([dependent_rows_miss_keys], below), so its "fails" is sound. `RankBasis.v` proves both
+    directions for the XOR basis as `rank.rs` runs it ([independent_iff_balanced]). *)
 
 From Coq Require Import List Arith Bool Lia Permutation.
 From Gartowen Require Import Laws ArtWord NodeLaws Symmetric ArtMarginal.
@@ -112,7 +112,7 @@ End Linear.
     basis rejects a row), the key bits of that subset always XOR to zero, so every key whose
     bits there XOR to one is hit by no index: the key map is not onto and the shape fails
     ([dependent_rows_miss_keys]; with keys read as numbers, [balanced_iff_onto]). The converse
-    (independent rows make the key onto) is not proved here. *)
+    (independent rows make the key onto) is `RankBasis.independent_iff_onto`. *)
 
 Definition dot (n r i : nat) : bool :=
   fold_right xorb false (map (fun c => Nat.testbit r c && Nat.testbit i c) (seq 0 n)).

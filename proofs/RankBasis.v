@@ -7,7 +7,11 @@
     that loop (fuel [D] for [D]-bit vectors), and [independent_iff_onto] proves that every
     insertion succeeds exactly when the key map [i ↦ (row_j · i)_j] of the indices below
     [2^D] is onto. With [Rank.balanced_iff_onto] (a linear key balances the boxes iff it is
-    onto) that is the rank path's verdict, both ways.
+    onto) that is the rank path's verdict, both ways ([independent_iff_balanced]: every box of
+    the shape holds [2^(D − k)] of the [2^D] indices). Not modelled: that a digital net's box
+    under a shape is this key of the point's index (the first [q·d_j] rows of each generator
+    matrix, stacked), which is how `rank.rs` builds the rows, and the depth-first search over
+    shapes that shares a prefix's basis among its completions.
 
     The proof follows the basis: XORing a pivot (an earlier row, reduced) into the row being
     inserted is a row operation, which keeps the key map onto or not onto ([add_row_onto_iff]);
@@ -343,4 +347,90 @@ Proof.
   - split; [intros j Hj; lia|split; [intros t Ht; contradiction|intros j j' Hj; lia]].
   - intros j _. reflexivity.
   - intro K. split; apply onto_ext; intros j _; unfold mix; reflexivity.
+Qed.
+
+(** ** The verdict in terms of boxes
+
+    Read as a number (bit [j] = row [j]'s dot product), the stacked rows' key is a linear map
+    of the index, so [Rank.balanced_iff_onto] applies: every insertion succeeds exactly when
+    every one of the [2^k] keys (boxes) holds [2^(D − k)] of the [2^D] indices. *)
+
+(** A list of bits as a number, bit [j] first-to-last from the least significant. *)
+Definition num (l : list bool) : nat := fold_right (fun v acc => Nat.b2n v + 2 * acc) 0 l.
+
+Lemma num_bits : forall l j, Nat.testbit (num l) j = nth j l false.
+Proof.
+  induction l as [|v l IH]; intro j.
+  { unfold num. simpl fold_right. rewrite Nat.bits_0. destruct j; reflexivity. }
+  unfold num in *. cbn [fold_right nth]. destruct v, j; simpl Nat.b2n.
+  - rewrite Nat.add_comm. apply Nat.testbit_odd_0.
+  - rewrite Nat.add_comm, Nat.testbit_odd_succ by lia. apply IH.
+  - rewrite Nat.add_0_l. apply Nat.testbit_even_0.
+  - rewrite Nat.add_0_l, Nat.testbit_even_succ by lia. apply IH.
+Qed.
+
+Lemma num_lt : forall l, num l < 2 ^ length l.
+Proof.
+  induction l as [|v l IH]; simpl; [lia|]. destruct v; simpl; lia.
+Qed.
+
+(** The key of index [i] as a number. *)
+Definition keynum (D : nat) (rs : list nat) (i : nat) : nat := num (map (fun r => dot D r i) rs).
+
+Lemma keynum_bits : forall D rs i j,
+  Nat.testbit (keynum D rs i) j = (j <? length rs) && dot D (nth j rs 0) i.
+Proof.
+  intros D rs i j. unfold keynum. rewrite num_bits.
+  destruct (Nat.ltb_spec j (length rs)) as [L|L].
+  - rewrite (nth_indep _ false ((fun r => dot D r i) 0)) by (rewrite map_length; exact L).
+    rewrite (map_nth (fun r => dot D r i) rs 0 j). reflexivity.
+  - apply nth_overflow. rewrite map_length. exact L.
+Qed.
+
+Lemma keynum_lt : forall D rs i, keynum D rs i < 2 ^ length rs.
+Proof. intros D rs i. unfold keynum. rewrite <- (map_length (fun r => dot D r i) rs). apply num_lt. Qed.
+
+Lemma keynum_lin : forall D rs i i',
+  keynum D rs (Nat.lxor i i') = Nat.lxor (keynum D rs i) (keynum D rs i').
+Proof.
+  intros D rs i i'. apply Nat.bits_inj. intro j.
+  rewrite Nat.lxor_spec, !keynum_bits, dot_lxor_r.
+  destruct (j <? length rs); reflexivity.
+Qed.
+
+Lemma onto_iff_keys : forall D rs, (forall y : nat -> bool,
+    exists i, i < 2 ^ D /\ forall j, j < length rs -> dot D (nth j rs 0) i = y j) <->
+  (forall y, y < 2 ^ length rs -> exists x, x < 2 ^ D /\ keynum D rs x = y).
+Proof.
+  intros D rs. split.
+  - intros O y Hy. destruct (O (Nat.testbit y)) as [i [Hi E]]. exists i. split; [exact Hi|].
+    apply Nat.bits_inj. intro j. rewrite keynum_bits.
+    destruct (Nat.ltb_spec j (length rs)) as [L|L].
+    + simpl. apply E, L.
+    + simpl. symmetry. apply small_no_bit.
+      apply (Nat.lt_le_trans _ (2 ^ length rs)); [exact Hy|apply Nat.pow_le_mono_r; lia].
+  - intros O y. destruct (O (num (map y (seq 0 (length rs))))) as [x [Hx E]].
+    + pose proof (num_lt (map y (seq 0 (length rs)))) as N.
+      rewrite map_length, seq_length in N. exact N.
+    + exists x. split; [exact Hx|]. intros j Hj.
+      pose proof (keynum_bits D rs x j) as B. rewrite E, num_bits in B.
+      replace (j <? length rs) with true in B by (symmetry; apply Nat.ltb_lt, Hj).
+      simpl in B. rewrite <- B.
+      rewrite (nth_indep _ false (y 0)) by (rewrite map_length, seq_length; exact Hj).
+      rewrite map_nth, seq_nth by exact Hj. reflexivity.
+Qed.
+
+(** The rank path's verdict for one shape: every stacked row is accepted by the XOR basis
+    exactly when each of the [2^k] boxes (keys) holds [2^(D − k)] of the [2^D] indices. *)
+Theorem independent_iff_balanced : forall D rs,
+  (forall r, In r rs -> r < 2 ^ D) -> length rs <= D ->
+  independent D rs = true <->
+  (forall y, y < 2 ^ length rs -> fibre D (keynum D rs) y = 2 ^ (D - length rs)).
+Proof.
+  intros D rs Small L.
+  rewrite (balanced_iff_onto D (length rs) (keynum D rs)).
+  - rewrite independent_iff_onto by exact Small. unfold onto. apply onto_iff_keys.
+  - intros x _. apply keynum_lt.
+  - intros x y _ _. apply keynum_lin.
+  - exact L.
 Qed.
