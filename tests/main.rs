@@ -7,6 +7,7 @@ mod expected_discrepancy;
 mod external;
 mod extracted_checker;
 mod extracted_differential;
+mod extracted_rank;
 mod f32_exhaustive;
 mod house_check;
 mod joint_laws;

@@ -28,6 +28,8 @@
          answer seq T MAXM holds BLOCKS SHAPES
          answer seq T MAXM fails BLOCKS SHAPES at K block I shape D,.. box A,.. count C
        endchecker
+     rank D NR R_1..R_NR         one shape's stacked rows (masks over D index bits), answered
+                                 "answer rank 1" when the XOR basis accepts every row, else 0
      done
    The checker's answers are compared by the Rust test, not here; POS, BLOCKS and SHAPES are
    the report's counters (failing shape's position, blocks and shapes examined), derived from
@@ -236,6 +238,15 @@ let checker_section () =
   loop ();
   incr checkers
 
+let ranks = ref 0
+
+let rank_section () =
+  let d = int_tok () in
+  let nr = int_tok () in
+  let rows = List.init nr (fun _ -> int_tok ()) in
+  incr ranks;
+  Printf.printf "answer rank %d\n" (if independent d rows then 1 else 0)
+
 let () =
   let rec sections () =
     match token () with
@@ -243,6 +254,7 @@ let () =
     | "act" -> act_section (); sections ()
     | "net" -> net_section (); sections ()
     | "checker" -> checker_section (); sections ()
+    | "rank" -> rank_section (); sections ()
     | "done" -> ()
     | t -> fail ("unexpected token: " ^ t)
   in
@@ -250,5 +262,6 @@ let () =
                      | End_of_file -> fail "input ends before done");
   Printf.printf "act: %d words\n" !acts;
   Printf.printf "checker: %d point sets\n" !checkers;
+  Printf.printf "rank: %d shapes\n" !ranks;
   Printf.printf "mismatches %d\n" !mismatches;
   exit (if !mismatches = 0 then 0 else 1)
