@@ -8,8 +8,8 @@
     when [H] sends every nonzero digit to every nonzero digit equally often
     ([affine_two_transitive]). For GL(q,2) that is the transitivity of GL on nonzero vectors,
     computed here for q = 4 (GL(4,2): 20,160 maps; [agl4_two_transitive], so art-owen-m4's node
-    law); q ≤ 3 is in [NodeLaws.v] (S_4 = AGL(2,2), AGL(3,2)). For q ≥ 5 the reduction
-    stands and the count over GL(q,2) is not computed here. *)
+    law); q ≤ 3 is in [NodeLaws.v] (S_4 = AGL(2,2), AGL(3,2)). For every q the count is
+    proved in [GLTransitive.v] ([agl_two_transitive]). *)
 
 From Coq Require Import List Arith Bool Lia.
 From Gartowen Require Import Laws ArtWord NodeLaws Symmetric ArtMarginal.

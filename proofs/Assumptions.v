@@ -1,7 +1,7 @@
 (** Every main theorem must be closed under the global context (no axioms, no admits), except
     the floating-point theorems of [Float.v], whose real numbers rest on the standard axioms of
     Coq's classical reals (listed in README.md; check.sh allows exactly those). *)
-From Gartowen Require Import Nested Boxes Checker NetMonotone Factor Counterexample Art ArtWord Binary Laws Symmetric NodeLaws ArtMarginal Affine Rank RankBasis.
+From Gartowen Require Import Nested Boxes Checker NetMonotone Factor Counterexample Art ArtWord Binary Laws Symmetric NodeLaws ArtMarginal Affine Rank RankBasis GLTransitive.
 
 Print Assumptions factorization_unique.
 Print Assumptions factorization_bijective.
@@ -67,3 +67,7 @@ Print Assumptions add_row_onto_iff.
 Print Assumptions zero_row_not_onto.
 Print Assumptions independent_iff_onto.
 Print Assumptions independent_iff_balanced.
+Print Assumptions gl_counts_equal.
+Print Assumptions move_nonzero.
+Print Assumptions gl_nonzero_uniform.
+Print Assumptions agl_two_transitive.
