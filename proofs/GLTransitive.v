@@ -67,25 +67,25 @@ Definition invertible (P Pi : nat -> nat) : Prop :=
   (forall x, x < 2 ^ q -> Pi (P x) = x) /\ (forall x, x < 2 ^ q -> P (Pi x) = x).
 
 (** [Q ∘ h ∘ P]. *)
-Definition conj (Q P h : nat -> nat) : nat -> nat := fun x => Q (h (P x)).
+Definition conjugate (Q P h : nat -> nat) : nat -> nat := fun x => Q (h (P x)).
 
-Lemma conj_agree : forall P Pi Q Qi h g, invertible P Pi -> invertible Q Qi ->
+Lemma conjugate_agree : forall P Pi Q Qi h g, invertible P Pi -> invertible Q Qi ->
   maps_digits q h -> maps_digits q g ->
-  agree q (conj Q P h) g = agree q h (conj Qi Pi g).
+  agree q (conjugate Q P h) g = agree q h (conjugate Qi Pi g).
 Proof.
   intros P Pi Q Qi h g [MP [MPi [_ [_ [PiP PPi]]]]] [MQ [MQi [_ [_ [QiQ QQi]]]]] Mh Mg.
-  apply eq_iff_eq_true. rewrite !agree_spec. unfold conj. split; intros E x Hx.
+  apply eq_iff_eq_true. rewrite !agree_spec. unfold conjugate. split; intros E x Hx.
   - rewrite <- (PPi x Hx) at 1. rewrite <- (E (Pi x) (MPi x Hx)). symmetry. apply QiQ, Mh.
     apply MP, MPi, Hx.
   - rewrite E by (apply MP, Hx). rewrite PiP by exact Hx. apply QQi, Mg, Hx.
 Qed.
 
-Lemma conj_linear_bijection : forall P Pi Q Qi h, invertible P Pi -> invertible Q Qi ->
+Lemma conjugate_linear_bijection : forall P Pi Q Qi h, invertible P Pi -> invertible Q Qi ->
   linear_on_digits q h -> bijective_on_digits q h ->
-  linear_on_digits q (conj Q P h) /\ bijective_on_digits q (conj Q P h).
+  linear_on_digits q (conjugate Q P h) /\ bijective_on_digits q (conjugate Q P h).
 Proof.
   intros P Pi Q Qi h [MP [MPi [LP [_ [PiP _]]]]] [MQ [_ [LQ [_ [QiQ _]]]]] Lh [Mh Ih].
-  unfold conj. split; [|split].
+  unfold conjugate. split; [|split].
   - intros x y Hx Hy. rewrite LP, Lh, LQ by auto. reflexivity.
   - intros x Hx. apply MQ, Mh, MP, Hx.
   - intros x y Hx Hy E. apply (f_equal Qi) in E. rewrite !QiQ in E by (apply Mh, MP; auto).
@@ -102,12 +102,12 @@ Theorem gl_counts_equal : forall H K,
   cnt (fun h => h v =? w) H = cnt (fun h => h (P v) =? Qi w) H.
 Proof.
   intros H K HH HK P Pi Q Qi IP IQ v w Hv Hw.
-  assert (Members : forall h, In h (map (conj Q P) H) ->
+  assert (Members : forall h, In h (map (conjugate Q P) H) ->
             linear_on_digits q h /\ bijective_on_digits q h).
   { intros h Hh. apply in_map_iff in Hh as [h0 [<- H0]].
-    destruct (HH h0 H0) as [L B]. apply (conj_linear_bijection P Pi Q Qi); assumption. }
-  rewrite (same_classes_same_counts (fun h => h v =? w)) with (H' := map (conj Q P) H).
-  - rewrite cnt_map. apply cnt_ext. intros h Hh. unfold conj.
+    destruct (HH h0 H0) as [L B]. apply (conjugate_linear_bijection P Pi Q Qi); assumption. }
+  rewrite (same_classes_same_counts (fun h => h v =? w)) with (H' := map (conjugate Q P) H).
+  - rewrite cnt_map. apply cnt_ext. intros h Hh. unfold conjugate.
     destruct IQ as [MQ [MQi [_ [_ [QiQ QQi]]]]]. destruct IP as [MP _].
     destruct (HH h Hh) as [_ [Mh _]].
     apply eq_iff_eq_true. rewrite !Nat.eqb_eq. split; intro E.
@@ -118,15 +118,15 @@ Proof.
     assert (Lg : linear_on_digits q g /\ bijective_on_digits q g)
       by (destruct Hg as [Hg|Hg]; [apply HH|apply Members]; exact Hg).
     destruct Lg as [Lg Bg]. rewrite (HK g Bg Lg), cnt_map.
-    rewrite (cnt_ext _ _ (fun h => agree q h (conj Qi Pi g))).
-    + symmetry. destruct (conj_linear_bijection Pi P Qi Q g) as [L' B'].
+    rewrite (cnt_ext _ _ (fun h => agree q h (conjugate Qi Pi g))).
+    + symmetry. destruct (conjugate_linear_bijection Pi P Qi Q g) as [L' B'].
       * destruct IP as [? [? [? [? [? ?]]]]]. repeat split; assumption.
       * destruct IQ as [? [? [? [? [? ?]]]]]. repeat split; assumption.
       * exact Lg.
       * exact Bg.
       * apply HK; assumption.
     + intros h Hh. destruct (HH h Hh) as [_ [Mh _]].
-      rewrite (conj_agree P Pi Q Qi h g IP IQ Mh (proj1 Bg)). reflexivity.
+      rewrite (conjugate_agree P Pi Q Qi h g IP IQ Mh (proj1 Bg)). reflexivity.
 Qed.
 
 (** ** Transvections: [x ↦ x ⊕ c] when bit [t] of [x] is set *)
