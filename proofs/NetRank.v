@@ -1,15 +1,17 @@
-(** * Binary digital nets: the rank path's verdict is [is_net].
+(** * Digital nets in base 2^q: the rank path's verdict is [is_net].
 
-    A binary digital net of [2^D] points in [s] dimensions with [n]-bit coordinates is given by
-    rows [G j k] (row [k] of coordinate [j]'s generator matrix, a mask over the [D] index
-    bits): bit [k] of coordinate [j] of point [i] is the GF(2) dot product of [G j k] with [i]
-    ([net_points]). A box of shape [d] (prefixes of [d_j] bits) holds point [i] exactly when
-    the stacked rows [shape_rows d] (the first [d_j] rows of each coordinate) give [i] the key
-    spelled by the box's bits ([in_box_iff_key]), so the box's count is that key's fibre
-    ([count_is_fibre]). With [RankBasis.independent_iff_balanced]: the points are a
-    [(t, m, s)]-net in base 2 ([Nested.is_net]) exactly when the XOR basis accepts the stacked
-    rows of every shape with [Σ d_j = m − t] ([rank_path_is_net]). Base 2^q is the binary case
-    of shape [q·d] (`rank.rs` stacks [q·d_j] rows); that step is not modelled here. *)
+    A digital net of [2^(q·m)] points in [s] dimensions with [n]-digit coordinates in base
+    2^q is given by rows [G j r] (row [r] of coordinate [j]'s generator matrix, a mask over
+    the [D = q·m] index bits): digit [k] of coordinate [j] of point [i] is the q-bit number
+    whose bits, most significant first, are the GF(2) dot products of rows [q·k], …,
+    [q·k + q − 1] with [i] ([net_points]; `rank.rs` reads row r as bit r from the top of the
+    coordinate word). A box of shape [d] holds point [i] exactly when the first [q·d_j] rows of
+    each coordinate, stacked, give [i] the key spelled by the bits of the box's digits
+    ([in_box_iff_key]), so every box's count is that key's fibre ([count_is_fibre]). With
+    [RankBasis.independent_iff_balanced]: the points are a [(t, m, s)]-net in base 2^q
+    ([Nested.is_net]) exactly when the XOR basis accepts the stacked rows of every shape with
+    [Σ d_j = m − t] ([rank_path_is_net]). The depth-first search of `rank.rs`, which shares a
+    prefix's basis among its completions, is not modelled (it is tested by extraction). *)
 
 From Coq Require Import List Arith Bool Lia.
 From Gartowen Require Import Nested Laws ArtWord NodeLaws Symmetric ArtMarginal Rank RankBasis.
@@ -30,15 +32,15 @@ Proof.
     Nat.sub_diag, firstn_O, app_nil_r, firstn_all2 by (rewrite seq_length; lia). reflexivity.
 Qed.
 
-(** Cut a list into blocks of the given lengths. *)
-Fixpoint blocks (d l : list nat) : list (list nat) :=
+(** Cut a list into pieces of the given lengths. *)
+Fixpoint cut {A} (d : list nat) (l : list A) : list (list A) :=
   match d with
   | [] => []
-  | k :: d' => firstn k l :: blocks d' (skipn k l)
+  | k :: d' => firstn k l :: cut d' (skipn k l)
   end.
 
-Lemma blocks_spec : forall d l, length l = sum d ->
-  concat (blocks d l) = l /\ map (@length nat) (blocks d l) = d.
+Lemma cut_spec : forall A d (l : list A), length l = sum d ->
+  concat (cut d l) = l /\ map (@length A) (cut d l) = d.
 Proof.
   induction d as [|k d IH]; intros l L; simpl in *.
   - destruct l; [auto|discriminate].
@@ -46,9 +48,9 @@ Proof.
     rewrite C, firstn_skipn, S, firstn_length. split; [reflexivity|]. f_equal. lia.
 Qed.
 
-Lemma blocks_in : forall d l p x, In p (blocks d l) -> In x p -> In x l.
+Lemma cut_in : forall A d (l : list A) p x, In p (cut d l) -> In x p -> In x l.
 Proof.
-  induction d as [|k d IH]; intros l p x Hp Hx; simpl in Hp; [contradiction|].
+  intros A d. induction d as [|k d IH]; intros l p x Hp Hx; simpl in Hp; [contradiction|].
   destruct Hp as [<-|Hp].
   - rewrite <- (firstn_skipn k l). apply in_or_app. left. exact Hx.
   - apply (IH _ _ _ Hp) in Hx. rewrite <- (firstn_skipn k l). apply in_or_app. right. exact Hx.
@@ -60,80 +62,162 @@ Proof.
   rewrite <- !num_bits, E. reflexivity.
 Qed.
 
-(** ** The net and its boxes *)
+Lemma num_of_bits : forall y k, y < 2 ^ k -> num (map (Nat.testbit y) (seq 0 k)) = y.
+Proof.
+  intros y k Hy. apply Nat.bits_inj. intro j. rewrite num_bits.
+  destruct (Nat.lt_ge_cases j k) as [L|L].
+  - rewrite (nth_indep _ false (Nat.testbit y 0)) by (rewrite map_length, seq_length; exact L).
+    rewrite map_nth, seq_nth by exact L. reflexivity.
+  - rewrite nth_overflow by (rewrite map_length, seq_length; exact L). symmetry.
+    apply small_no_bit. apply (Nat.lt_le_trans _ (2 ^ k)); [exact Hy|apply Nat.pow_le_mono_r; lia].
+Qed.
+
+Section Digits.
+
+Variable q : nat.
+
+(** A digit from its q bits, most significant first, and back. *)
+Definition digit_value (bs : list bool) : nat := num (rev bs).
+Definition digit_bits (v : nat) : list bool := rev (map (Nat.testbit v) (seq 0 q)).
+
+Lemma digit_bits_length : forall v, length (digit_bits v) = q.
+Proof. intro v. unfold digit_bits. rewrite rev_length, map_length, seq_length. reflexivity. Qed.
+
+Lemma digit_value_lt : forall bs, length bs = q -> digit_value bs < 2 ^ q.
+Proof. intros bs L. unfold digit_value. rewrite <- L, <- rev_length. apply num_lt. Qed.
+
+Lemma digit_iff : forall bs v, length bs = q -> v < 2 ^ q ->
+  digit_value bs = v <-> bs = digit_bits v.
+Proof.
+  intros bs v L Hv. unfold digit_value, digit_bits. split; intro E.
+  - rewrite <- (num_of_bits v q Hv) in E. apply num_inj in E.
+    + rewrite <- E, rev_involutive. reflexivity.
+    + rewrite rev_length, map_length, seq_length. exact L.
+  - rewrite E, rev_involutive. apply num_of_bits, Hv.
+Qed.
+
+Lemma seq_groups : forall d, seq 0 (q * d) = flat_map (fun k => map (fun u => q * k + u) (seq 0 q)) (seq 0 d).
+Proof.
+  induction d as [|d IH]; [rewrite Nat.mul_0_r; reflexivity|].
+  rewrite seq_S, flat_map_app, <- IH. simpl. rewrite app_nil_r.
+  replace (q * S d) with (q * d + q) by lia. rewrite seq_app. f_equal.
+  clear. simpl. generalize (q * d) as a. generalize q as len. intros len.
+  induction len as [|len IH]; intro a; [reflexivity|].
+  rewrite !seq_S, map_app, IH; simpl; repeat f_equal; lia.
+Qed.
+
+End Digits.
 
 Section Net.
 
-Variables D s n : nat.
+Variables q D s n : nat.
 Variable G : nat -> nat -> nat.
 
-Definition coord (j i : nat) : list nat := map (fun k => Nat.b2n (dot D (G j k) i)) (seq 0 n).
+Definition digit_rows_bits (j k i : nat) : list bool :=
+  map (fun u => dot D (G j (q * k + u)) i) (seq 0 q).
+
+Definition coord (j i : nat) : list nat :=
+  map (fun k => digit_value (digit_rows_bits j k i)) (seq 0 n).
 Definition point (i : nat) : list (list nat) := map (fun j => coord j i) (seq 0 s).
 Definition net_points : list (list (list nat)) := map point (seq 0 (2 ^ D)).
 
 Fixpoint rows_from (j : nat) (d : list nat) : list nat :=
   match d with
   | [] => []
-  | k :: d' => map (G j) (seq 0 k) ++ rows_from (S j) d'
+  | k :: d' => map (G j) (seq 0 (q * k)) ++ rows_from (S j) d'
   end.
 
-(** The stacked rows of shape [d]: the first [d_j] rows of each coordinate. *)
+(** The stacked rows of a base-2^q shape [d]: the first [q·d_j] rows of each coordinate. *)
 Definition shape_rows (d : list nat) : list nat := rows_from 0 d.
 
-Lemma rows_from_length : forall d j, length (rows_from j d) = sum d.
+Lemma rows_from_length : forall d j, length (rows_from j d) = q * sum d.
 Proof.
-  induction d as [|k d IH]; intro j; simpl; [reflexivity|].
-  rewrite app_length, map_length, seq_length, IH. reflexivity.
+  induction d as [|k d IH]; intro j; simpl; [lia|].
+  rewrite app_length, map_length, seq_length, IH. lia.
 Qed.
 
-(** The box's bits as booleans. *)
-Definition box_bits (B : list (list nat)) : list bool := map (fun x => x =? 1) (concat B).
+(** The bits of a box's digits, in the order of the stacked rows. *)
+Definition box_bits (B : list (list nat)) : list bool :=
+  concat (map (fun p => concat (map (digit_bits q) p)) B).
+
+Lemma concat_groups : forall (l l' : list (list bool)), Forall (fun g => length g = q) l ->
+  Forall (fun g => length g = q) l' -> concat l = concat l' -> length l = length l' -> l = l'.
+Proof.
+  induction l as [|g l IH]; intros [|g' l'] F F' E L; simpl in *; try lia; [reflexivity|].
+  inversion F; inversion F'; subst.
+  apply app_eq_same_length in E as [<- E]; [|congruence].
+  f_equal. apply IH; auto.
+Qed.
+
+Lemma prefix_coord : forall p j i, length p <= n -> Forall (fun x => x < 2 ^ q) p ->
+  prefix_of p (coord j i) = true <->
+  map (fun r => dot D r i) (map (G j) (seq 0 (q * length p))) = concat (map (digit_bits q) p).
+Proof.
+  intros p j i Lp Vp. unfold prefix_of, coord. rewrite firstn_map, firstn_seq0 by exact Lp.
+  rewrite map_map, seq_groups, flat_map_concat_map, concat_map, map_map.
+  assert (Groups : forall k, length (map (fun x => dot D (G j x) i)
+                     (map (fun u => q * k + u) (seq 0 q))) = q)
+    by (intro k; rewrite !map_length, seq_length; reflexivity).
+  split.
+  - intro H. destruct (list_eq_dec _ _ _) as [E|]; [|discriminate]. rewrite <- E at 2.
+    rewrite map_map. f_equal. apply map_ext. intro k.
+    symmetry. unfold digit_rows_bits. rewrite map_map. symmetry.
+    apply (proj1 (digit_iff q _ _ ltac:(rewrite map_length, seq_length; reflexivity)
+                   (digit_value_lt q _ ltac:(rewrite map_length, seq_length; reflexivity)))).
+    reflexivity.
+  - intro E. apply concat_groups in E.
+    + destruct (list_eq_dec _ _ _) as [_|N]; [reflexivity|exfalso; apply N].
+      transitivity (map digit_value (map (digit_bits q) p)).
+      * rewrite <- E, map_map. apply map_ext. intro k. unfold digit_rows_bits.
+        rewrite map_map. reflexivity.
+      * rewrite map_map. rewrite <- (map_id p) at 2. apply map_ext_in. intros v Hv.
+        rewrite Forall_forall in Vp.
+        apply (proj2 (digit_iff q (digit_bits q v) v (digit_bits_length q v) (Vp v Hv))).
+        reflexivity.
+    + apply Forall_forall. intros g Hg. apply in_map_iff in Hg as [k [<- _]]. apply Groups.
+    + apply Forall_forall. intros g Hg. apply in_map_iff in Hg as [v [<- _]]. apply digit_bits_length.
+    + rewrite !map_length, seq_length. reflexivity.
+Qed.
+
+Lemma box_digits_length : forall p, length (concat (map (digit_bits q) p)) = q * length p.
+Proof.
+  induction p as [|v p IH]; simpl; [lia|]. rewrite app_length, IH, digit_bits_length. lia.
+Qed.
+
+Lemma box_bits_length : forall B, length (box_bits B) = q * sum (map (@length nat) B).
+Proof.
+  induction B as [|p B IH]; simpl; [lia|]. unfold box_bits in *. simpl.
+  rewrite app_length, IH, box_digits_length. lia.
+Qed.
 
 Lemma in_box_from : forall B j i, Forall (fun p => length p <= n) B ->
+  Forall (fun p => Forall (fun x => x < 2 ^ q) p) B ->
   in_box B (map (fun j' => coord j' i) (seq j (length B))) = true <->
-  map (fun r => Nat.b2n (dot D r i)) (rows_from j (map (@length nat) B)) = concat B.
+  map (fun r => dot D r i) (rows_from j (map (@length nat) B)) = box_bits B.
 Proof.
-  induction B as [|p B IH]; intros j i Ln; [simpl; split; reflexivity|].
-  inversion Ln as [|? ? Lp LB]; subst.
-  simpl. rewrite andb_true_iff, IH by exact LB. rewrite map_app, map_map.
-  unfold prefix_of, coord. rewrite firstn_map, firstn_seq0 by exact Lp.
-  split.
-  - intros [P Q]. destruct (list_eq_dec _ _ _) as [E|]; [|discriminate]. rewrite E, Q. reflexivity.
-  - intro E. apply app_eq_same_length in E as [E1 E2];
-      [|rewrite map_length, seq_length; reflexivity].
-    split; [|exact E2]. destruct (list_eq_dec _ _ _) as [_|N]; [reflexivity|contradiction].
+  induction B as [|p B IH]; intros j i Ln Lv; [simpl; split; reflexivity|].
+  inversion Ln as [|? ? Lp LB]; inversion Lv as [|? ? Vp VB]; subst.
+  simpl. rewrite andb_true_iff, IH by assumption. rewrite map_app.
+  unfold box_bits. simpl. fold (box_bits B).
+  rewrite (prefix_coord p j i Lp Vp), map_map. split.
+  - intros [P Q]. rewrite P, Q. reflexivity.
+  - intro E. apply app_eq_same_length in E as [E1 E2]; [split; assumption|].
+    rewrite map_length, seq_length, box_digits_length. reflexivity.
 Qed.
 
-(** A box of [s] prefixes of at most [n] bits holds point [i] exactly when the stacked rows of
-    its shape give [i] the key its bits spell. *)
 Theorem in_box_iff_key : forall B i, length B = s -> Forall (fun p => length p <= n) B ->
-  Forall (fun p => Forall (fun x => x < 2) p) B ->
+  Forall (fun p => Forall (fun x => x < 2 ^ q) p) B ->
   in_box B (point i) = true <->
   keynum D (shape_rows (map (@length nat) B)) i = num (box_bits B).
 Proof.
-  intros B i Ls Ln Lv. unfold point. rewrite <- Ls, (in_box_from B 0 i Ln).
-  unfold shape_rows, keynum, box_bits.
-  assert (Len : length (map (fun r => dot D r i) (rows_from 0 (map (@length nat) B))) =
-                length (map (fun x => x =? 1) (concat B))).
-  { rewrite !map_length, rows_from_length. clear. induction B as [|p B IH]; simpl; [reflexivity|].
-    rewrite app_length, IH. reflexivity. }
-  assert (Bits : concat B = map Nat.b2n (map (fun x => x =? 1) (concat B))).
-  { rewrite map_map. symmetry. rewrite <- (map_id (concat B)) at 2. apply map_ext_in.
-    intros x Hx. apply in_concat in Hx as [p [Hp Hx]]. rewrite Forall_forall in Lv.
-    pose proof (proj1 (Forall_forall _ _) (Lv p Hp) x Hx). destruct x as [|[|x]]; simpl; lia. }
-  split.
-  - intro E. f_equal. rewrite Bits, <- map_map in E. clear Bits.
-    apply (f_equal (map (fun v => v =? 1))) in E. rewrite !map_map in E.
-    rewrite (map_ext (fun x => Nat.b2n (dot D x i) =? 1) (fun x => dot D x i)) in E
-      by (intro x; destruct (dot D x i); reflexivity).
-    rewrite (map_ext (fun x => Nat.b2n (x =? 1) =? 1) (fun x => x =? 1)) in E
-      by (intro x; destruct (x =? 1); reflexivity).
-    exact E.
-  - intro E. apply num_inj in E; [|exact Len]. rewrite Bits, <- E, map_map. reflexivity.
+  intros B i Ls Ln Lv. unfold point. rewrite <- Ls, (in_box_from B 0 i Ln Lv).
+  unfold shape_rows, keynum. split; [intro E; rewrite E; reflexivity|].
+  intro E. apply num_inj in E; [exact E|].
+  rewrite map_length, rows_from_length, box_bits_length. reflexivity.
 Qed.
 
 Lemma count_is_fibre : forall B, length B = s -> Forall (fun p => length p <= n) B ->
-  Forall (fun p => Forall (fun x => x < 2) p) B ->
+  Forall (fun p => Forall (fun x => x < 2 ^ q) p) B ->
   count B net_points =
   fibre D (keynum D (shape_rows (map (@length nat) B))) (num (box_bits B)).
 Proof.
@@ -151,77 +235,91 @@ Proof.
   apply in_map_iff in Hr as [k' [<- _]]. apply Small.
 Qed.
 
-Lemma concat_length_sum : forall (B : list (list nat)), length (concat B) = sum (map (@length nat) B).
-Proof. induction B as [|p B IH]; simpl; [reflexivity|]. rewrite app_length, IH. reflexivity. Qed.
+End Net.
 
-Lemma num_of_bits : forall y k, y < 2 ^ k -> num (map (Nat.testbit y) (seq 0 k)) = y.
+Lemma sum_repeat : forall q k, sum (repeat q k) = q * k.
+Proof. intros q k. induction k as [|k IH]; simpl; [lia|]. unfold sum in *. simpl. rewrite IH. lia. Qed.
+
+Lemma concat_map_concat : forall A B (f : A -> list B) (L : list (list A)),
+  concat (map (fun p => concat (map f p)) L) = concat (map f (concat L)).
 Proof.
-  intros y k Hy. apply Nat.bits_inj. intro j. rewrite num_bits.
-  destruct (Nat.lt_ge_cases j k) as [L|L].
-  - rewrite (nth_indep _ false (Nat.testbit y 0)) by (rewrite map_length, seq_length; exact L).
-    rewrite map_nth, seq_nth by exact L. reflexivity.
-  - rewrite nth_overflow by (rewrite map_length, seq_length; exact L). symmetry.
-    apply small_no_bit. apply (Nat.lt_le_trans _ (2 ^ k)); [exact Hy|apply Nat.pow_le_mono_r; lia].
+  intros A B f L. induction L as [|p L IH]; simpl; [reflexivity|].
+  rewrite IH, map_app, concat_app. reflexivity.
 Qed.
 
-(** The rank path decides [is_net] for binary digital nets: the [2^m] points are a
-    [(t, m, s)]-net in base 2 exactly when the XOR basis accepts the stacked rows of every
-    shape of [s] parts (each at most [n]) summing to [m − t]. *)
-Theorem rank_path_is_net : forall m t, D = m -> t <= m -> (forall j k, G j k < 2 ^ D) ->
-  is_net 2 n m t s net_points <->
+(** The rank path decides [is_net] in base 2^q: the [2^(q·m)] points are a [(t, m, s)]-net
+    in base 2^q exactly when the XOR basis accepts the stacked rows (the first [q·d_j] of each
+    coordinate) of every shape of [s] parts (each at most [n]) summing to [m − t]. *)
+Theorem rank_path_is_net : forall q D s n G m t, D = q * m -> t <= m ->
+  (forall j k, G j k < 2 ^ D) ->
+  is_net (2 ^ q) n m t s (net_points q D s n G) <->
   (forall d, length d = s -> Forall (fun k => k <= n) d -> sum d = m - t ->
-     independent D (shape_rows d) = true).
+     independent D (shape_rows q G d) = true).
 Proof.
-  intros m t HD Ht Small. split.
+  intros q D s n G m t HD Ht Small. split.
   - intros [_ [_ Boxes]] d Ld Fd Sd.
-    assert (Lr : length (shape_rows d) = m - t) by (unfold shape_rows; rewrite rows_from_length; exact Sd).
-    apply independent_iff_balanced; [intros r Hr; apply (rows_small Small d 0 r Hr)|lia|].
+    assert (Lr : length (shape_rows q G d) = q * (m - t))
+      by (unfold shape_rows; rewrite rows_from_length, Sd; reflexivity).
+    apply independent_iff_balanced;
+      [intros r Hr; apply (rows_small q D G Small d 0 r Hr)|rewrite Lr, HD; nia|].
     intros y Hy. rewrite Lr in Hy |- *.
-    set (bl := map (Nat.testbit y) (seq 0 (m - t))).
-    set (B := blocks d (map Nat.b2n bl)).
-    assert (LB : length (map Nat.b2n bl) = sum d) by (unfold bl; rewrite !map_length, seq_length; lia).
-    destruct (blocks_spec d _ LB) as [CB SB]. fold B in CB, SB.
-    assert (Digits : Forall (fun p => Forall (fun x => x < 2) p) B).
+    set (bl := map (Nat.testbit y) (seq 0 (q * (m - t)))).
+    set (groups := cut (repeat q (m - t)) bl).
+    destruct (cut_spec bool (repeat q (m - t)) bl) as [Cg Sg];
+      [unfold bl; rewrite map_length, seq_length, sum_repeat; reflexivity|].
+    fold groups in Cg, Sg.
+    assert (Gq : forall g, In g groups -> length g = q).
+    { intros g Hg. assert (In (length g) (repeat q (m - t))) by (rewrite <- Sg; apply in_map, Hg).
+      apply repeat_spec in H. exact H. }
+    set (digits := map digit_value groups).
+    assert (Ldig : length digits = sum d).
+    { unfold digits. rewrite map_length, <- (map_length (@length bool)), Sg, repeat_length. lia. }
+    set (B := cut d digits).
+    destruct (cut_spec nat d digits Ldig) as [CB SB]. fold B in CB, SB.
+    assert (Digits : Forall (fun p => Forall (fun x => x < 2 ^ q) p) B).
     { apply Forall_forall. intros p Hp. apply Forall_forall. intros x Hx.
-      apply (blocks_in _ _ _ _ Hp) in Hx. apply in_map_iff in Hx as [v [<- _]].
-      destruct v; simpl; lia. }
+      apply (cut_in _ _ _ _ _ Hp) in Hx. apply in_map_iff in Hx as [g [<- Hg]].
+      apply digit_value_lt, Gq, Hg. }
     assert (LBs : length B = s) by (rewrite <- (map_length (@length nat) B), SB; exact Ld).
     assert (Ln : Forall (fun p => length p <= n) B).
     { apply Forall_forall. intros p Hp. rewrite Forall_forall in Fd. apply Fd.
       rewrite <- SB. apply in_map, Hp. }
+    assert (Bits : box_bits q B = bl).
+    { unfold box_bits. rewrite concat_map_concat, CB. unfold digits. rewrite map_map.
+      rewrite <- Cg. f_equal. rewrite <- (map_id groups) at 2. apply map_ext_in.
+      intros g Hg. symmetry.
+      apply (proj1 (digit_iff q g _ (Gq g Hg) (digit_value_lt q g (Gq g Hg)))). reflexivity. }
     pose proof (Boxes B LBs Digits Ln) as C. unfold shape in C. rewrite SB in C.
-    specialize (C Sd). rewrite count_is_fibre, SB in C by assumption.
-    unfold box_bits in C. rewrite CB, map_map in C.
-    rewrite (map_ext (fun x => Nat.b2n x =? 1) (fun x => x)) in C by (intros [|]; reflexivity).
-    rewrite map_id in C. unfold bl in C. rewrite num_of_bits in C by exact Hy.
-    rewrite C. f_equal. lia.
+    specialize (C Sd). rewrite count_is_fibre, SB, Bits in C by assumption.
+    unfold bl in C. rewrite num_of_bits in C by exact Hy.
+    rewrite C, <- Nat.pow_mul_r. f_equal. rewrite HD. nia.
   - intro I. split; [|split].
-    + unfold net_points. rewrite map_length, seq_length, HD. reflexivity.
+    + unfold net_points. rewrite map_length, seq_length, HD, Nat.pow_mul_r. reflexivity.
     + apply Forall_forall. intros P HP. unfold net_points in HP.
       apply in_map_iff in HP as [i [<- _]]. unfold point. split; [|split].
       * rewrite map_length, seq_length. reflexivity.
       * apply Forall_forall. intros x Hx. apply in_map_iff in Hx as [j [<- _]].
         apply Forall_forall. intros v Hv. unfold coord in Hv.
-        apply in_map_iff in Hv as [k [<- _]]. destruct (dot D (G j k) i); simpl; lia.
+        apply in_map_iff in Hv as [k [<- _]]. apply digit_value_lt.
+        unfold digit_rows_bits. rewrite map_length, seq_length. reflexivity.
       * apply Forall_forall. intros x Hx. apply in_map_iff in Hx as [j [<- _]].
         unfold coord. rewrite map_length, seq_length. reflexivity.
     + intros B LB VB LnB SB. unfold shape in SB.
-      assert (Digits : Forall (fun p => Forall (fun x => x < 2) p) B) by exact VB.
+      assert (Digits : Forall (fun p => Forall (fun x => x < 2 ^ q) p) B) by exact VB.
       rewrite count_is_fibre by assumption.
       set (d := map (@length nat) B) in *.
-      assert (Lr : length (shape_rows d) = m - t)
-        by (unfold shape_rows; rewrite rows_from_length; exact SB).
+      assert (Lr : length (shape_rows q G d) = q * (m - t))
+        by (unfold shape_rows; rewrite rows_from_length, SB; reflexivity).
       pose proof (I d ltac:(unfold d; rewrite map_length; exact LB)
                     ltac:(unfold d; apply Forall_forall; intros k Hk;
                           apply in_map_iff in Hk as [p [<- Hp]];
                           rewrite Forall_forall in LnB; apply LnB, Hp) SB) as Ind.
-      pose proof (proj1 (independent_iff_balanced D (shape_rows d)
-                      (fun r Hr => rows_small Small d 0 r Hr) ltac:(lia)) Ind) as Bal.
+      pose proof (proj1 (independent_iff_balanced D (shape_rows q G d)
+                      (fun r Hr => rows_small q D G Small d 0 r Hr)
+                      ltac:(rewrite Lr, HD; nia)) Ind) as Bal.
       rewrite Lr in Bal. rewrite Bal.
-      * f_equal. lia.
-      * assert (Lb : length (box_bits B) = m - t)
-          by (unfold box_bits; rewrite map_length, concat_length_sum; exact SB).
+      * rewrite <- Nat.pow_mul_r. f_equal. rewrite HD. nia.
+      * assert (Lb : length (box_bits q B) = q * (m - t))
+          by (rewrite box_bits_length; fold d; rewrite SB; reflexivity).
         rewrite <- Lb. apply num_lt.
 Qed.
-
-End Net.

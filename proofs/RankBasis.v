@@ -8,10 +8,9 @@
     insertion succeeds exactly when the key map [i ↦ (row_j · i)_j] of the indices below
     [2^D] is onto. With [Rank.balanced_iff_onto] (a linear key balances the boxes iff it is
     onto) that is the rank path's verdict, both ways ([independent_iff_balanced]: every box of
-    the shape holds [2^(D − k)] of the [2^D] indices). Not modelled: that a digital net's box
-    under a shape is this key of the point's index (the first [q·d_j] rows of each generator
-    matrix, stacked), which is how `rank.rs` builds the rows, and the depth-first search over
-    shapes that shares a prefix's basis among its completions.
+    the shape holds [2^(D − k)] of the [2^D] indices). `NetRank.v` shows that a digital net's
+    box is this key of the point's index, so the verdict is [is_net]; the depth-first search
+    over shapes that shares a prefix's basis among its completions is not modelled.
 
     The proof follows the basis: XORing a pivot (an earlier row, reduced) into the row being
     inserted is a row operation, which keeps the key map onto or not onto ([add_row_onto_iff]);
