@@ -2,6 +2,7 @@
 //! constants) equals the integral of the kind's definition, computed cell by cell in exact
 //! rationals without any closed form (`gartowen_oracles::discrepancy_integral`).
 
+use crate::exactness::reference_kind;
 use gartowen_core::{mix64, Width};
 use gartowen_discrepancy::{exact::exact, Kind, Points};
 use gartowen_oracles::discrepancy_integral::{
@@ -10,15 +11,6 @@ use gartowen_oracles::discrepancy_integral::{
 use gartowen_oracles::exact_discrepancy::ReferenceKind;
 use num_bigint::BigInt;
 use num_rational::BigRational;
-
-fn reference_kind(k: Kind) -> ReferenceKind {
-    match k {
-        Kind::L2Star => ReferenceKind::L2Star,
-        Kind::Centered => ReferenceKind::Centered,
-        Kind::WrapAround => ReferenceKind::WrapAround,
-        Kind::GeneralizedL2 => ReferenceKind::GeneralizedL2,
-    }
-}
 
 fn closed_form(words: &[u64], d: usize, w: u32, kind: Kind) -> BigRational {
     let p = Points {

@@ -11,7 +11,7 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::Signed;
 
-fn reference_kind(k: Kind) -> ReferenceKind {
+pub(crate) fn reference_kind(k: Kind) -> ReferenceKind {
     match k {
         Kind::L2Star => ReferenceKind::L2Star,
         Kind::Centered => ReferenceKind::Centered,
