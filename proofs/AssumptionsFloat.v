@@ -3,7 +3,7 @@
     [Print Assumptions] may list exactly the four standard axioms that check.sh allows
     (ClassicalDedekindReals.sig_forall_dec, ClassicalDedekindReals.sig_not_dec,
     FunctionalExtensionality.functional_extensionality_dep, Classical_Prop.classic). *)
-From Gartowen Require Import Float DdSum Discrepancy.
+From Gartowen Require Import Float DdSum Discrepancy WrapAround.
 
 Print Assumptions two_sum_exact.
 Print Assumptions quick_two_sum_exact.
@@ -24,3 +24,4 @@ Print Assumptions separable_closed_form.
 Print Assumptions warnock_formula.
 Print Assumptions gl2_formula.
 Print Assumptions centred_formula.
+Print Assumptions wd_formula.

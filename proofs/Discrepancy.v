@@ -27,9 +27,8 @@
       [[0, 1]], every projection; [M] even): [(13/12)^s − (2/N)·Σ_p Π_j (1 + |x_pj − ½|/2
       − |x_pj − ½|²/2) + (1/N²)·Σ_p Σ_q Π_j (1 + |x_pj − ½|/2 + |x_qj − ½|/2 − |x_pj − x_qj|/2)].
 
-    These are the closed forms `crates/discrepancy/src/kinds.rs` evaluates. The wrap-around
-    form is checked against the integral of its definition in exact rationals
-    (`oracles/src/discrepancy_integral.rs`), not proved here. *)
+    These are the closed forms `crates/discrepancy/src/kinds.rs` evaluates; the wrap-around
+    form is `WrapAround.wd_formula`. *)
 
 From Coq Require Import Reals Lra Lia List Arith.
 Import ListNotations.
