@@ -24,12 +24,6 @@ Variable q : nat.
 Lemma agree_refl : forall f, agree q f f = true.
 Proof. intro f. apply (agree_spec q). reflexivity. Qed.
 
-Lemma agree_sym : forall f g, agree q f g = agree q g f.
-Proof.
-  intros f g. apply eq_iff_eq_true. rewrite !agree_spec.
-  split; intros E x Hx; symmetry; apply E, Hx.
-Qed.
-
 Lemma agree_trans : forall f g k, agree q f g = true -> agree q f k = agree q g k.
 Proof.
   intros f g k Efg. rewrite (agree_spec q) in Efg. apply eq_iff_eq_true. rewrite !agree_spec.

@@ -120,17 +120,6 @@ Proof.
   intro f. unfold wd_pieces. rewrite sumR_flat_map. apply sumR_ext. intros a _.
   rewrite sumR_flat_map. apply sumR_ext. intros c _. rewrite !sumR_cons. simpl. ring.
 Qed.
-
-(** Cells above [k]: [Σ_c [k < c] g(c)] by telescoping. *)
-Lemma count_above : forall k, (k < M)%nat ->
-  sumR (fun c => ind (k <? c)%nat) (seq 0 M) = INR M - INR k - 1.
-Proof.
-  intros k Hk. rewrite (telescope_gen_eq INR M (S k)).
-  - replace (S k <=? M)%nat with true by (symmetry; apply Nat.leb_le; lia). rewrite S_INR. ring.
-  - intro c. rewrite S_INR. unfold ind.
-    destruct (Nat.ltb_spec k c), (Nat.leb_spec (S k) c); try lia; ring.
-Qed.
-
 Lemma count_from : forall k, (k <= M)%nat ->
   sumR (fun c => ind (k <=? c)%nat) (seq 0 M) = INR M - INR k.
 Proof.
