@@ -231,3 +231,79 @@ fn batch_tables_are_built_once_the_words_pay_for_them_and_change_no_output() {
         assert!(fresh.batch_tables_built() && fresh.clone().batch_tables_built());
     }
 }
+
+/// Words that share their leading bits in every amount: for each j in 0..=W, a run of words
+/// equal to one base above bit W − j and random below it (so a group of lanes shares exactly j
+/// bits, give or take the chance that every lane agrees on more), then runs of consecutive
+/// words from random starts and a run of one repeated word. The runs are not aligned to the
+/// kernels' groups, so groups also straddle two runs. `shift` is XORed into the paired runs
+/// at the end (the dimension's input shift, so the kernels see the prefixes as built).
+fn words_sharing_prefixes(seed: u64, w: u32, shift: u64) -> Vec<u64> {
+    let mut rng = SplitMix64::new(seed);
+    let mask = Width::new(w).unwrap().mask();
+    let mut out = Vec::new();
+    for j in 0..=w {
+        let base = rng.next_u64() & mask;
+        let low = if j == w { 0 } else { mask >> j };
+        let run = 21 + (rng.next_u64() % 40) as usize;
+        out.extend((0..run).map(|_| base ^ (rng.next_u64() & low)));
+    }
+    for _ in 0..4 {
+        let start = rng.next_u64() & mask;
+        out.extend((0..300u64).map(|i| start.wrapping_add(i) & mask));
+    }
+    let same = rng.next_u64() & mask;
+    out.extend(std::iter::repeat_n(same, 70));
+    // Pairs of runs of 48 words (a whole gather block, six lanes of eight) whose shared
+    // prefixes spell the same number at two depths j1 < j2: the top j1 bits are v in the
+    // first run and the top j2 bits are v in the second, so a group's shared steps are known
+    // only by their count and bits together.
+    out.resize(out.len().next_multiple_of(48), 0);
+    for j1 in 1..w {
+        for j2 in j1 + 1..=(j1 + 8).min(w) {
+            let v = rng.next_u64() & (mask >> (w - j1));
+            for j in [j1, j2] {
+                let low = mask >> j;
+                out.extend((0..48).map(|_| ((v << (w - j)) | (rng.next_u64() & low)) ^ shift));
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn words_sharing_leading_steps_equal_the_scalar_path() {
+    // The batch kernels walk the steps that all words of a group share once for the group;
+    // every sharing depth, from none to the whole word, must give the scalar path's words.
+    for variant in ArtVariant::all() {
+        for symbols in [2usize, 256, 1024] {
+            let art = ArtOwen::new(variant, symbols, 13).unwrap();
+            for &kernel in &BatchKernel::available() {
+                let s = art.with_kernel(kernel).unwrap();
+                for bits in [5u32, 8, 13, 24, 30, 31, 32] {
+                    let width = Width::new(bits).unwrap();
+                    let (shift, _) = art.dimension_shifts(6, width);
+                    let input = words_sharing_prefixes(u64::from(bits), bits, shift);
+                    let mut batch = input.clone();
+                    s.scramble_batch(&mut batch, width, 6);
+                    for (i, (&x, &y)) in input.iter().zip(&batch).enumerate() {
+                        assert_eq!(
+                            y,
+                            art.scramble(x, width, 6),
+                            "{} table {symbols} {kernel:?} width {bits} word {i} ({x:#x})",
+                            variant.name()
+                        );
+                    }
+                    if bits == 32 {
+                        // The u32 path walks the 32-bit words themselves.
+                        let mut batch32: Vec<u32> = input.iter().map(|&x| x as u32).collect();
+                        s.scramble_batch_u32(&mut batch32, 6);
+                        for (i, (&y, &y32)) in batch.iter().zip(&batch32).enumerate() {
+                            assert_eq!(y, u64::from(y32), "{} u32 word {i}", variant.name());
+                        }
+                    }
+                }
+            }
+        }
+    }
+}

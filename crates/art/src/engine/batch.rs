@@ -158,9 +158,97 @@ pub(super) fn narrow(table: &[u64], step_bits: u32, symbols: u64) -> Vec<u32> {
         .collect()
 }
 
+/// Where a group of lanes begins its walk: the whole steps that all its words share (taken once
+/// for the group) and the accumulator and symbol after them.
+///
+/// **Why sharing pays.** Words with the same leading k·SB bits (after the input shift, which is
+/// the same for every word of a call) read the same k table entries, so the walk of one word
+/// gives every lane's state after k steps. Consecutive words, as the every-word sweep and
+/// index scrambling feed them, share all but their last step within a group of 16; one table
+/// read per word replaces four. Words that share nothing (k = 0) walk as before.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) struct GroupStart {
+    /// Whole steps already taken (0 to the word's whole steps).
+    pub(super) steps: u32,
+    /// The accumulator after them (as in [`walk_portable`]).
+    pub(super) acc: u64,
+    /// The symbol reached.
+    pub(super) symbol: u32,
+}
+
+impl GroupStart {
+    /// No step taken: the walk begins at `root`.
+    pub(super) fn at(root: u32) -> GroupStart {
+        GroupStart {
+            steps: 0,
+            acc: 0,
+            symbol: root,
+        }
+    }
+}
+
+/// The last shared prefix walked in a call, so runs of groups with one prefix walk it once.
+#[derive(Debug)]
+pub(super) struct PrefixMemo {
+    /// (steps << 32) | the prefix's bits; never a real key before the first walk.
+    key: u64,
+    acc: u64,
+    symbol: u32,
+}
+
+impl PrefixMemo {
+    /// An empty memo (for one call: one root, input shift and width).
+    pub(super) fn new() -> PrefixMemo {
+        PrefixMemo {
+            key: u64::MAX,
+            acc: 0,
+            symbol: 0,
+        }
+    }
+
+    /// The start of a group of lanes whose words' left-aligned bits (the input shift applied,
+    /// the word's first bit at bit 63) are `bits` in its first lane and differ from them in
+    /// the bits set in `diff`: the whole steps they all share (at most `steps`), walked from
+    /// `root` through `table` (memoized).
+    #[inline(always)]
+    pub(super) fn start<const SB: u32>(
+        &mut self,
+        table: &[u64],
+        bits: u64,
+        diff: u64,
+        steps: u32,
+        root: u32,
+    ) -> GroupStart {
+        let shared = (diff.leading_zeros() / SB).min(steps);
+        if shared == 0 {
+            return GroupStart::at(root);
+        }
+        let key = (u64::from(shared) << 32) | (bits >> (64 - shared * SB));
+        if key != self.key {
+            let (mut acc, mut symbol) = (0u64, root as usize);
+            for i in 0..shared {
+                let v = ((bits << (SB * i)) >> (64 - SB)) as usize;
+                let e = table[(symbol << SB) | v];
+                acc ^= e >> (SB * i);
+                symbol = (e & 0xFFFF) as usize;
+            }
+            *self = PrefixMemo {
+                key,
+                acc,
+                symbol: symbol as u32,
+            };
+        }
+        GroupStart {
+            steps: shared,
+            acc: self.acc,
+            symbol: self.symbol,
+        }
+    }
+}
+
 /// Walks [`LANES`] words (W ≤ 32 bits) through `steps` whole steps of the batch `table`:
 /// returns each lane's accumulator (the output and pending translations in its top 32 bits) and
-/// its symbol after the steps.
+/// its symbol after the steps. The steps all lanes share are walked once (`memo`).
 #[inline(always)]
 pub(super) fn walk_portable<const SB: u32>(
     table: &[u64],
@@ -168,12 +256,16 @@ pub(super) fn walk_portable<const SB: u32>(
     w: u32,
     steps: u32,
     root: u32,
+    memo: &mut PrefixMemo,
 ) -> ([u64; LANES], [usize; LANES]) {
     // Words left-aligned: each step reads the top SB bits, then shifts them out.
-    let mut bits = x.map(|v| v << (64 - w));
-    let mut s = [root as usize; LANES];
-    let mut acc = [0u64; LANES];
-    for i in 0..steps {
+    let bits = x.map(|v| v << (64 - w));
+    let diff = bits.iter().fold(0, |o, &b| o | (b ^ bits[0]));
+    let start = memo.start::<SB>(table, bits[0], diff, steps, root);
+    let mut bits = bits.map(|b| b << (SB * start.steps));
+    let mut s = [start.symbol as usize; LANES];
+    let mut acc = [start.acc; LANES];
+    for i in start.steps..steps {
         let shift = SB * i;
         for l in 0..LANES {
             let v = (bits[l] >> (64 - SB)) as usize;
@@ -184,6 +276,41 @@ pub(super) fn walk_portable<const SB: u32>(
         }
     }
     (acc, s)
+}
+
+/// A word type the batch path scrambles in place: `u64` (any width) or `u32` (32-bit words,
+/// walked without widening them first).
+pub(super) trait Word: Copy + Default {
+    /// Whether the word is 64 bits (else 32); the gather kernels load and store by it.
+    const WIDE: bool;
+    /// The word as 64 bits.
+    fn get(self) -> u64;
+    /// The low bits of `v` as a word.
+    fn put(v: u64) -> Self;
+}
+
+impl Word for u64 {
+    const WIDE: bool = true;
+    #[inline(always)]
+    fn get(self) -> u64 {
+        self
+    }
+    #[inline(always)]
+    fn put(v: u64) -> u64 {
+        v
+    }
+}
+
+impl Word for u32 {
+    const WIDE: bool = false;
+    #[inline(always)]
+    fn get(self) -> u64 {
+        u64::from(self)
+    }
+    #[inline(always)]
+    fn put(v: u64) -> u32 {
+        v as u32
+    }
 }
 
 /// Which code walks the lanes of the batch path. Every kernel gives the same words (tested);
@@ -289,7 +416,8 @@ impl ArtOwen {
 
     /// Forward scramble of `words` in place for dimension `dim`, equal to
     /// [`gartowen_core::Scrambler::scramble`] on each word.
-    pub(super) fn forward_batch(&self, words: &mut [u64], width: Width, dim: u32) {
+    pub(super) fn forward_batch<T: Word>(&self, words: &mut [T], width: Width, dim: u32) {
+        debug_assert!(T::WIDE || width == Width::W32, "u32 words are 32 bits");
         // The step width as a constant, so the step's shifts are immediates.
         let packed = if width.bits() <= 32 {
             self.batch_tables_for(words.len())
@@ -298,54 +426,55 @@ impl ArtOwen {
         };
         if let Some(t) = packed {
             match self.batch_step_bits() {
-                1 => self.batch_lanes::<1, true>(t, words, width, dim),
-                2 => self.batch_lanes::<2, true>(t, words, width, dim),
-                3 => self.batch_lanes::<3, true>(t, words, width, dim),
-                4 => self.batch_lanes::<4, true>(t, words, width, dim),
-                5 => self.batch_lanes::<5, true>(t, words, width, dim),
-                6 => self.batch_lanes::<6, true>(t, words, width, dim),
-                7 => self.batch_lanes::<7, true>(t, words, width, dim),
-                8 => self.batch_lanes::<8, true>(t, words, width, dim),
+                1 => self.batch_lanes::<1, true, T>(t, words, width, dim),
+                2 => self.batch_lanes::<2, true, T>(t, words, width, dim),
+                3 => self.batch_lanes::<3, true, T>(t, words, width, dim),
+                4 => self.batch_lanes::<4, true, T>(t, words, width, dim),
+                5 => self.batch_lanes::<5, true, T>(t, words, width, dim),
+                6 => self.batch_lanes::<6, true, T>(t, words, width, dim),
+                7 => self.batch_lanes::<7, true, T>(t, words, width, dim),
+                8 => self.batch_lanes::<8, true, T>(t, words, width, dim),
                 _ => unreachable!("batch steps are 1 to 8 bits"),
             }
         } else {
             match self.q() * self.step_digits {
-                3 => self.batch_lanes::<3, false>(&NO_BATCH_TABLES, words, width, dim),
-                4 => self.batch_lanes::<4, false>(&NO_BATCH_TABLES, words, width, dim),
-                5 => self.batch_lanes::<5, false>(&NO_BATCH_TABLES, words, width, dim),
-                6 => self.batch_lanes::<6, false>(&NO_BATCH_TABLES, words, width, dim),
-                7 => self.batch_lanes::<7, false>(&NO_BATCH_TABLES, words, width, dim),
-                8 => self.batch_lanes::<8, false>(&NO_BATCH_TABLES, words, width, dim),
+                3 => self.batch_lanes::<3, false, T>(&NO_BATCH_TABLES, words, width, dim),
+                4 => self.batch_lanes::<4, false, T>(&NO_BATCH_TABLES, words, width, dim),
+                5 => self.batch_lanes::<5, false, T>(&NO_BATCH_TABLES, words, width, dim),
+                6 => self.batch_lanes::<6, false, T>(&NO_BATCH_TABLES, words, width, dim),
+                7 => self.batch_lanes::<7, false, T>(&NO_BATCH_TABLES, words, width, dim),
+                8 => self.batch_lanes::<8, false, T>(&NO_BATCH_TABLES, words, width, dim),
                 _ => unreachable!("scalar steps are 3 to 8 bits"),
             }
         }
     }
 
     /// [`LANES`] words at a time through the batch tables `t` (PACKED) or the split tables.
-    fn batch_lanes<const SB: u32, const PACKED: bool>(
+    fn batch_lanes<const SB: u32, const PACKED: bool, T: Word>(
         &self,
         t: &BatchTables,
-        words: &mut [u64],
+        words: &mut [T],
         width: Width,
         dim: u32,
     ) {
         let (root, a, d) = self.keys_at(dim, width);
         let w = width.bits();
         let steps = w / SB;
+        let mut memo = PrefixMemo::new();
         #[cfg(target_arch = "x86_64")]
         let words = if PACKED && self.kernel != BatchKernel::Portable {
             use super::GROUPS;
             let mut blocks = words.chunks_exact_mut(GROUPS * LANES);
             for block in &mut blocks {
-                self.gather_block::<SB>(t, block, root, a, d, w);
+                self.gather_block::<SB, T>(t, block, root, a, d, w, &mut memo);
             }
             let rest = blocks.into_remainder();
             if rest.len() >= PADDED_BLOCK_MIN {
                 // A zero-padded block: its GROUPS · LANES words cost about what
                 // PADDED_BLOCK_MIN words cost in the portable lanes (3 ns against 9 ns a word).
-                let mut block = [0u64; GROUPS * LANES];
+                let mut block = [T::default(); GROUPS * LANES];
                 block[..rest.len()].copy_from_slice(rest);
-                self.gather_block::<SB>(t, &mut block, root, a, d, w);
+                self.gather_block::<SB, T>(t, &mut block, root, a, d, w, &mut memo);
                 rest.copy_from_slice(&block[..rest.len()]);
                 &mut []
             } else {
@@ -356,20 +485,20 @@ impl ArtOwen {
         };
         let mut chunks = words.chunks_exact_mut(LANES);
         for chunk in &mut chunks {
-            let chunk: &mut [u64; LANES] = chunk.try_into().expect("chunks_exact");
-            let x: [u64; LANES] = std::array::from_fn(|l| chunk[l] ^ a);
+            let chunk: &mut [T; LANES] = chunk.try_into().expect("chunks_exact");
+            let x: [u64; LANES] = std::array::from_fn(|l| chunk[l].get() ^ a);
             let out = if PACKED {
-                let (acc, s) = walk_portable::<SB>(&t.table, x, w, steps, root);
+                let (acc, s) = walk_portable::<SB>(&t.table, x, w, steps, root, &mut memo);
                 self.finish_packed(&x, w, steps * SB, acc, s)
             } else {
                 self.lanes_wide::<SB>(x, w, steps, root)
             };
             for l in 0..LANES {
-                chunk[l] = out[l] ^ d;
+                chunk[l] = T::put(out[l] ^ d);
             }
         }
         for w in chunks.into_remainder() {
-            *w = self.forward_fast(*w ^ a, width, root) ^ d;
+            *w = T::put(self.forward_fast(w.get() ^ a, width, root) ^ d);
         }
     }
 
@@ -377,25 +506,29 @@ impl ArtOwen {
     /// scrambler's gather kernel, scrambled in place.
     #[cfg(target_arch = "x86_64")]
     #[inline(always)]
-    fn gather_block<const SB: u32>(
+    #[allow(clippy::too_many_arguments)]
+    fn gather_block<const SB: u32, T: Word>(
         &self,
         t: &BatchTables,
-        block: &mut [u64],
+        block: &mut [T],
         root: u32,
         a: u64,
         d: u64,
         w: u32,
+        memo: &mut PrefixMemo,
     ) {
         use super::simd::{walk_avx512, walk_avx512_narrow};
         let steps = w / SB;
+        let table = &t.table;
         // SAFETY: the gather kernels are chosen only where the CPU reported AVX-512F, and
         // `BatchTables::build` checked the table invariants the kernels need.
         let walked = unsafe {
             if self.kernel == BatchKernel::Avx512 || t.narrow.is_empty() {
-                walk_avx512::<SB>(&t.table, &self.codes, self.q(), block, a, d, w, steps, root)
+                let codes = &self.codes;
+                walk_avx512::<SB, T>(table, codes, self.q(), block, a, d, w, steps, root, memo)
             } else {
-                walk_avx512_narrow::<SB>(
-                    &t.table,
+                walk_avx512_narrow::<SB, T>(
+                    table,
                     &t.narrow,
                     &t.codes_top,
                     self.q(),
@@ -405,16 +538,17 @@ impl ArtOwen {
                     w,
                     steps,
                     root,
+                    memo,
                 )
             }
         };
         let Some(walked) = walked else { return };
         for (g, (acc, s)) in walked.into_iter().enumerate() {
             let lanes = &mut block[g * LANES..(g + 1) * LANES];
-            let x: [u64; LANES] = std::array::from_fn(|l| lanes[l] ^ a);
+            let x: [u64; LANES] = std::array::from_fn(|l| lanes[l].get() ^ a);
             let out = self.finish_packed(&x, w, steps * SB, acc, s);
             for l in 0..LANES {
-                lanes[l] = out[l] ^ d;
+                lanes[l] = T::put(out[l] ^ d);
             }
         }
     }

@@ -544,6 +544,10 @@ impl Scrambler for ArtOwen {
     fn scramble_batch(&self, words: &mut [u64], width: Width, dim: u32) {
         self.forward_batch(words, width, dim)
     }
+    /// The same lanes walked on the 32-bit words themselves (no widened copy).
+    fn scramble_batch_u32(&self, words: &mut [u32], dim: u32) {
+        self.forward_batch(words, Width::W32, dim)
+    }
     fn inverse(&self) -> Option<&dyn Unscramble> {
         Some(self)
     }

@@ -1,7 +1,14 @@
-//! The AVX-512 kernel of the batch path: the eight lanes of [`super::batch::walk_portable`]
-//! in one 512-bit register each for the input bits, the symbols and the accumulators, and one
-//! gather per step for the eight table entries. Same arithmetic, same words.
+//! The AVX-512 kernels of the batch path: the lanes of [`super::batch::walk_portable`] in
+//! 512-bit registers for the input bits, the symbols and the accumulators, and one gather per
+//! step for the lanes' table entries. Same arithmetic, same words.
+//!
+//! **Groups that read one cache line.** A group's lanes that share all of a word's whole steps
+//! but the last walk those once (`PrefixMemo`); when they also share all but the last step's
+//! lowest 3 (64-bit entries) or 4 (32-bit entries) bits, the last step's entries lie in one
+//! aligned 64-byte run of the table row, so one load and a lane permutation replace the
+//! gather. Consecutive words (the every-word sweep, index scrambling) are such groups.
 
+use super::batch::{PrefixMemo, Word};
 use super::{GROUPS, LANES};
 use std::arch::x86_64::*;
 
@@ -10,11 +17,12 @@ use std::arch::x86_64::*;
 pub(super) type Walked = [([u64; LANES], [usize; LANES]); GROUPS];
 
 /// [`super::batch::walk_portable`] with AVX-512F on a block of [`GROUPS`] × [`LANES`] words
-/// (input shift `a` applied here). When the whole steps leave at most a partial tail digit
-/// (r = w − steps·SB < q bits, translation only: its node XORs the top r bits of the pending
-/// translations and of the code of the symbol reached, gathered from `codes`), the scrambled
-/// words (with output shift `d`) are written to `block` and `None` is returned; otherwise
-/// `block` is left as it was and the lanes' state is returned.
+/// (input shift `a` applied here), the steps a group shares walked once (`memo`). When the
+/// whole steps leave at most a partial tail digit (r = w − steps·SB < q bits, translation
+/// only: its node XORs the top r bits of the pending translations and of the code of the
+/// symbol reached, gathered from `codes`), the scrambled words (with output shift `d`) are
+/// written to `block` and `None` is returned; otherwise `block` is left as it was and the
+/// lanes' state is returned.
 ///
 /// # Safety
 /// The CPU must support AVX-512F, and `table` must hold `symbols << SB` entries whose low 16
@@ -23,45 +31,68 @@ pub(super) type Walked = [([u64; LANES], [usize; LANES]); GROUPS];
 /// grammar (whose children are symbols), and the constructor checks both.
 #[target_feature(enable = "avx512f")]
 #[allow(clippy::too_many_arguments)]
-pub(super) unsafe fn walk_avx512<const SB: u32>(
+pub(super) unsafe fn walk_avx512<const SB: u32, T: Word>(
     table: &[u64],
     codes: &[u64],
     q: u32,
-    block: &mut [u64],
+    block: &mut [T],
     a: u64,
     d: u64,
     w: u32,
     steps: u32,
     root: u32,
+    memo: &mut PrefixMemo,
 ) -> Option<Walked> {
     assert_eq!(block.len(), GROUPS * LANES, "one block");
     let count = |n: u32| _mm_cvtsi64_si128(n as i64);
     let sb = count(SB);
     let top = count(64 - SB);
     let shift_a = _mm512_set1_epi64(a as i64);
-    // SAFETY (loads and stores here and below): unaligned 64-byte accesses inside `block`
-    // (GROUPS · 8 words, asserted) and [u64; 8] arrays.
-    let mut bits: [__m512i; GROUPS] = std::array::from_fn(|g| {
+    let consumed = steps * SB;
+    let zero = _mm512_setzero_si512();
+    let (mut bits, mut s, mut acc) = ([zero; GROUPS], [zero; GROUPS], [zero; GROUPS]);
+    let mut shared = [0u32; GROUPS];
+    let mut one_line = [false; GROUPS];
+    for g in 0..GROUPS {
         // SAFETY: 8 words from g·8 lie inside `block` (GROUPS · 8 words, asserted).
-        let x = unsafe { _mm512_loadu_si512(block[g * LANES..].as_ptr().cast()) };
-        _mm512_sll_epi64(_mm512_xor_si512(x, shift_a), count(64 - w))
-    });
-    let mut s = [_mm512_set1_epi64(root as i64); GROUPS];
-    let mut acc = [_mm512_setzero_si512(); GROUPS];
+        let x = unsafe { load8(block, g) };
+        let b = _mm512_sll_epi64(_mm512_xor_si512(x, shift_a), count(64 - w));
+        let b0 = _mm_cvtsi128_si64(_mm512_castsi512_si128(b)) as u64;
+        let diff = _mm512_reduce_or_epi64(_mm512_xor_si512(b, _mm512_set1_epi64(b0 as i64)));
+        let start = memo.start::<SB>(table, b0, diff as u64, steps, root);
+        let lz = (diff as u64).leading_zeros();
+        // Only the last step's lowest 3 bits differ (so SB ≥ 3): one line of 8 entries.
+        one_line[g] = SB >= 3 && lz < consumed && lz + 3 >= consumed;
+        shared[g] = start.steps;
+        bits[g] = _mm512_sll_epi64(b, count(SB * start.steps));
+        s[g] = _mm512_set1_epi64(start.symbol as i64);
+        acc[g] = _mm512_set1_epi64(start.acc as i64);
+    }
     let symbol_mask = _mm512_set1_epi64(0xFFFF);
     for i in 0..steps {
         let shift = count(SB * i);
         for g in 0..GROUPS {
+            if i < shared[g] {
+                continue;
+            }
             let v = _mm512_srl_epi64(bits[g], top);
             bits[g] = _mm512_sll_epi64(bits[g], sb);
             let idx = _mm512_or_si512(_mm512_sll_epi64(s[g], sb), v);
-            // SAFETY: idx < table.len() in every lane, by the caller's table invariant.
-            let e = unsafe { _mm512_i64gather_epi64::<8>(idx, table.as_ptr().cast()) };
+            let e = if one_line[g] {
+                // Every lane's index is in the aligned run of 8 holding lane 0's (SB ≥ 3,
+                // so rows are whole runs); the permutation reads each lane's low 3 bits.
+                let first = _mm_cvtsi128_si64(_mm512_castsi512_si128(idx)) as usize & !7;
+                let run = &table[first..first + 8];
+                // SAFETY: an unaligned 64-byte load of the 8 entries checked above.
+                _mm512_permutexvar_epi64(idx, unsafe { _mm512_loadu_si512(run.as_ptr().cast()) })
+            } else {
+                // SAFETY: idx < table.len() in every lane, by the caller's table invariant.
+                unsafe { _mm512_i64gather_epi64::<8>(idx, table.as_ptr().cast()) }
+            };
             acc[g] = _mm512_xor_si512(acc[g], _mm512_srl_epi64(e, shift));
             s[g] = _mm512_and_si512(e, symbol_mask);
         }
     }
-    let consumed = steps * SB;
     let r = w - consumed;
     if r < q {
         let shift_d = _mm512_set1_epi64(d as i64);
@@ -79,17 +110,14 @@ pub(super) unsafe fn walk_avx512<const SB: u32>(
                 let code = unsafe { _mm512_i64gather_epi64::<8>(s[g], codes.as_ptr().cast()) };
                 let pending = _mm512_sll_epi64(acc[g], count(consumed));
                 let t = _mm512_srl_epi64(_mm512_xor_si512(pending, code), count(64 - r));
-                let x = _mm512_xor_si512(
-                    // SAFETY: 8 words from g·8 lie inside `block` (asserted above).
-                    unsafe { _mm512_loadu_si512(block[g * LANES..].as_ptr().cast()) },
-                    shift_a,
-                );
+                // SAFETY: 8 words from g·8 lie inside `block` (asserted above).
+                let x = _mm512_xor_si512(unsafe { load8(block, g) }, shift_a);
                 let tail = _mm512_and_si512(x, _mm512_set1_epi64(((1u64 << r) - 1) as i64));
                 y = _mm512_or_si512(_mm512_sll_epi64(y, count(r)), _mm512_xor_si512(tail, t));
             }
             let y = _mm512_xor_si512(y, shift_d);
             // SAFETY: 8 words from g·8 lie inside `block` (asserted above).
-            unsafe { _mm512_storeu_si512(block[g * LANES..].as_mut_ptr().cast(), y) };
+            unsafe { store8(block, g, y) };
         }
         return None;
     }
@@ -105,9 +133,43 @@ pub(super) unsafe fn walk_avx512<const SB: u32>(
     }))
 }
 
+/// Words 8g..8g + 8 of `block` as eight 64-bit lanes.
+///
+/// # Safety
+/// AVX-512F, and the words lie inside `block`.
+#[inline(always)]
+unsafe fn load8<T: Word>(block: &[T], g: usize) -> __m512i {
+    let p = block[g * LANES..g * LANES + LANES].as_ptr();
+    // SAFETY: the caller's; the slice above checked the 8 words are in bounds.
+    unsafe {
+        if T::WIDE {
+            _mm512_loadu_si512(p.cast())
+        } else {
+            _mm512_cvtepu32_epi64(_mm256_loadu_si256(p.cast()))
+        }
+    }
+}
+
+/// Stores eight 64-bit lanes (their low 32 bits for `u32` words) as words 8g..8g + 8.
+///
+/// # Safety
+/// AVX-512F, and the words lie inside `block`.
+#[inline(always)]
+unsafe fn store8<T: Word>(block: &mut [T], g: usize, y: __m512i) {
+    let p = block[g * LANES..g * LANES + LANES].as_mut_ptr();
+    // SAFETY: the caller's; the slice above checked the 8 words are in bounds.
+    unsafe {
+        if T::WIDE {
+            _mm512_storeu_si512(p.cast(), y)
+        } else {
+            _mm256_storeu_si256(p.cast(), _mm512_cvtepi64_epi32(y))
+        }
+    }
+}
+
 /// Groups of sixteen 32-bit lanes walked together by [`walk_avx512_narrow`]: the same
 /// [`GROUPS`] · [`LANES`] words per block as [`walk_avx512`].
-const NARROW_GROUPS: usize = GROUPS * LANES / 16;
+pub(super) const NARROW_GROUPS: usize = GROUPS * LANES / 16;
 
 /// [`walk_avx512`] with 32-bit lanes and the narrow table (see `batch::narrow`): step 0
 /// gathers the root's row of `table` (its full 32-bit contribution and next symbol, two
@@ -121,49 +183,86 @@ const NARROW_GROUPS: usize = GROUPS * LANES / 16;
 /// (the next symbol) are below `symbols`, with `codes_top.len() == symbols`.
 #[target_feature(enable = "avx512f")]
 #[allow(clippy::too_many_arguments)]
-pub(super) unsafe fn walk_avx512_narrow<const SB: u32>(
+pub(super) unsafe fn walk_avx512_narrow<const SB: u32, T: Word>(
     table: &[u64],
     narrow: &[u32],
     codes_top: &[u32],
     q: u32,
-    block: &mut [u64],
+    block: &mut [T],
     a: u64,
     d: u64,
     w: u32,
     steps: u32,
     root: u32,
+    memo: &mut PrefixMemo,
 ) -> Option<Walked> {
     assert_eq!(block.len(), GROUPS * LANES, "one block");
     let count = |n: u32| _mm_cvtsi64_si128(n as i64);
     let shift_a = _mm512_set1_epi64(a as i64);
     // Sixteen words of the block, input shift applied, as 32-bit lanes (w ≤ 32).
-    let load32 = |block: &[u64], g: usize| {
-        // SAFETY: two unaligned 64-byte loads inside `block` (NARROW_GROUPS · 16 words).
+    let load32 = |block: &[T], g: usize| {
+        let p = block[g * 16..g * 16 + 16].as_ptr();
+        if !T::WIDE {
+            // SAFETY: one unaligned 64-byte load of the 16 words checked above.
+            let x = unsafe { _mm512_loadu_si512(p.cast()) };
+            return _mm512_xor_si512(x, _mm512_set1_epi32(a as u32 as i32));
+        }
+        // SAFETY: two unaligned 64-byte loads of the 16 words checked above.
         let (lo, hi) = unsafe {
             (
-                _mm512_loadu_si512(block[g * 16..].as_ptr().cast()),
-                _mm512_loadu_si512(block[g * 16 + 8..].as_ptr().cast()),
+                _mm512_loadu_si512(p.cast()),
+                _mm512_loadu_si512(p.add(8).cast()),
             )
         };
         let lo = _mm512_cvtepi64_epi32(_mm512_xor_si512(lo, shift_a));
         let hi = _mm512_cvtepi64_epi32(_mm512_xor_si512(hi, shift_a));
         _mm512_inserti64x4::<1>(_mm512_castsi256_si512(lo), hi)
     };
-    let mut bits: [__m512i; NARROW_GROUPS] =
-        std::array::from_fn(|g| _mm512_sll_epi32(load32(block, g), count(32 - w)));
-    let mut s = [_mm512_set1_epi32(root as i32); NARROW_GROUPS];
-    let mut acc = [_mm512_setzero_si512(); NARROW_GROUPS];
+    let consumed = steps * SB;
+    let zero = _mm512_setzero_si512();
+    let (mut bits, mut s, mut acc) = (
+        [zero; NARROW_GROUPS],
+        [zero; NARROW_GROUPS],
+        [zero; NARROW_GROUPS],
+    );
+    let mut shared = [0u32; NARROW_GROUPS];
+    let mut one_line = [false; NARROW_GROUPS];
+    for g in 0..NARROW_GROUPS {
+        let b = _mm512_sll_epi32(load32(block, g), count(32 - w));
+        let b0 = _mm512_cvtsi512_si32(b) as u32;
+        let diff = _mm512_reduce_or_epi32(_mm512_xor_si512(b, _mm512_set1_epi32(b0 as i32))) as u32;
+        let start = memo.start::<SB>(
+            table,
+            u64::from(b0) << 32,
+            u64::from(diff) << 32,
+            steps,
+            root,
+        );
+        let lz = diff.leading_zeros();
+        // Only the last step's lowest 4 bits differ, and that step reads `narrow` (not step
+        // 0): one line of 16 entries.
+        one_line[g] = SB >= 4 && steps >= 2 && lz < consumed && lz + 4 >= consumed;
+        shared[g] = start.steps;
+        // A shift by 32 (every step shared) leaves no bits, as it should.
+        bits[g] = _mm512_sll_epi32(b, count(SB * start.steps));
+        s[g] = _mm512_set1_epi32(start.symbol as i32);
+        // The narrow accumulator is the top half of the wide one (see `batch::narrow`).
+        acc[g] = _mm512_set1_epi32((start.acc >> 32) as u32 as i32);
+    }
     let next_mask = _mm512_set1_epi32(((1u32 << SB) - 1) as i32);
     let sb = count(SB);
     let top = count(32 - SB);
     if steps > 0 {
         // Step 0 reads the root's row of the wide table: full contribution and next symbol.
-        let row = _mm512_set1_epi32((root << SB) as i32);
         let join = |l: __m256i, h: __m256i| _mm512_inserti64x4::<1>(_mm512_castsi256_si512(l), h);
+        let row = _mm512_set1_epi32((root << SB) as i32);
         for g in 0..NARROW_GROUPS {
+            if shared[g] > 0 {
+                continue;
+            }
             let idx = _mm512_or_si512(row, _mm512_srl_epi32(bits[g], top));
             bits[g] = _mm512_sll_epi32(bits[g], sb);
-            // SAFETY: root < symbols and the digits < 2^SB, so every index < table.len().
+            // SAFETY: the root < symbols and the digits < 2^SB, so every index < table.len().
             let (lo, hi) = unsafe {
                 (
                     _mm512_i32gather_epi64::<8>(_mm512_castsi512_si256(idx), table.as_ptr().cast()),
@@ -186,17 +285,28 @@ pub(super) unsafe fn walk_avx512_narrow<const SB: u32>(
     for i in 1..steps {
         let shift = count(SB * i);
         for g in 0..NARROW_GROUPS {
+            if i < shared[g] {
+                continue;
+            }
             let v = _mm512_srl_epi32(bits[g], top);
             bits[g] = _mm512_sll_epi32(bits[g], sb);
             let idx = _mm512_or_si512(_mm512_sll_epi32(s[g], sb), v);
-            // SAFETY: every index < narrow.len(), by the caller's invariant.
-            let e = unsafe { _mm512_i32gather_epi32::<4>(idx, narrow.as_ptr().cast()) };
+            let e = if one_line[g] {
+                // Every lane's index is in the aligned run of 16 holding lane 0's (SB ≥ 4,
+                // so rows are whole runs); the permutation reads each lane's low 4 bits.
+                let first = _mm512_cvtsi512_si32(idx) as u32 as usize & !15;
+                let run = &narrow[first..first + 16];
+                // SAFETY: an unaligned 64-byte load of the 16 entries checked above.
+                _mm512_permutexvar_epi32(idx, unsafe { _mm512_loadu_si512(run.as_ptr().cast()) })
+            } else {
+                // SAFETY: every index < narrow.len(), by the caller's invariant.
+                unsafe { _mm512_i32gather_epi32::<4>(idx, narrow.as_ptr().cast()) }
+            };
             // A shift of SB or more drops the next symbol's bits.
             acc[g] = _mm512_xor_si512(acc[g], _mm512_srl_epi32(e, shift));
             s[g] = _mm512_and_si512(e, next_mask);
         }
     }
-    let consumed = steps * SB;
     let r = w - consumed;
     if r < q {
         let shift_d = _mm512_set1_epi32(d as u32 as i32);
@@ -218,12 +328,18 @@ pub(super) unsafe fn walk_avx512_narrow<const SB: u32>(
                 y = _mm512_or_si512(_mm512_sll_epi32(y, count(r)), _mm512_xor_si512(tail, t));
             }
             let y = _mm512_xor_si512(y, shift_d);
-            let lo = _mm512_cvtepu32_epi64(_mm512_castsi512_si256(y));
-            let hi = _mm512_cvtepu32_epi64(_mm512_extracti64x4_epi64::<1>(y));
-            // SAFETY: two unaligned 64-byte stores inside `block`.
-            unsafe {
-                _mm512_storeu_si512(block[g * 16..].as_mut_ptr().cast(), lo);
-                _mm512_storeu_si512(block[g * 16 + 8..].as_mut_ptr().cast(), hi);
+            let p = block[g * 16..g * 16 + 16].as_mut_ptr();
+            if T::WIDE {
+                let lo = _mm512_cvtepu32_epi64(_mm512_castsi512_si256(y));
+                let hi = _mm512_cvtepu32_epi64(_mm512_extracti64x4_epi64::<1>(y));
+                // SAFETY: two unaligned 64-byte stores of the 16 words checked above.
+                unsafe {
+                    _mm512_storeu_si512(p.cast(), lo);
+                    _mm512_storeu_si512(p.add(8).cast(), hi);
+                }
+            } else {
+                // SAFETY: one unaligned 64-byte store of the 16 words checked above.
+                unsafe { _mm512_storeu_si512(p.cast(), y) };
             }
         }
         return None;
