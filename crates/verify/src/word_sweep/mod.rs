@@ -23,8 +23,10 @@
 //! chunk and π is injective. (If: f maps chunk c injectively into the words with prefix π(c), a set
 //! of the same size, hence onto it; distinct chunks have distinct image sets, which therefore
 //! partition the words. Only if: a nested bijection maps chunk c onto the prefix-π(c) words, so two
-//! chunks with one image prefix would collide.) A chunk's injectivity needs a bitmap of its low
-//! W − qd bits only: at most 4 MiB per thread (2^25 words for base 128), 128 KiB in base 2.
+//! chunks with one image prefix would collide.) The same argument one level down decides a
+//! chunk's injectivity: its blocks of at most 2^15 words (a deeper depth d′) each need a
+//! bitmap of 4 KiB at most, and the nodes between depths d and d′ must send their children to
+//! distinct digits (checked at the children's first words).
 //!
 //! **Node permutations come for free.** The node permutation σ_{k,p} maps digit e to digit k of
 //! f(p, e, 0, …, 0), the output of the first word of child (p, e). For depths k < d those words
@@ -337,3 +339,5 @@ pub fn split_run(segments: &[u64], run: Range<u64>) -> Vec<(usize, Range<u64>)> 
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_collisions;

@@ -81,6 +81,11 @@ struct ChunkRecord {
     rescanned: bool,
 }
 
+/// Most low bits of a block, the subtree whose outputs one bitmap holds (see [`ChunkScan`]),
+/// unless a whole digit has more: 2^6 bits, one machine word, which the scan keeps in a
+/// register.
+const BLOCK_BITS: u32 = 6;
+
 /// Buffers one worker reuses from chunk to chunk.
 struct Scratch {
     frame32: Vec<u32>,
@@ -96,18 +101,58 @@ impl Scratch {
         Scratch {
             frame32: Vec::with_capacity(if plan.width().bits() == 32 { frame } else { 0 }),
             frame64: Vec::with_capacity(if plan.width().bits() == 32 { 0 } else { frame }),
-            bitmap: vec![0; (plan.chunk_words() as usize).div_ceil(64)],
+            bitmap: vec![0; (1usize << block_low_bits(plan)).div_ceil(64)],
             node: vec![vec![0; plan.base().base() as usize]; laws],
         }
     }
 }
 
+/// The depth d′ ≥ d of the blocks whose outputs one bitmap holds: the shallowest whose
+/// subtrees have at most 2^max([`BLOCK_BITS`], q) words (whole digits always reach it: after
+/// them fewer than q bits are left).
+fn block_digits(plan: &SweepPlan) -> u32 {
+    let (w, q) = (plan.width().bits(), plan.base().q());
+    let mut k = plan.chunk_digits();
+    while w - q * k > BLOCK_BITS.max(q) {
+        k += 1;
+    }
+    k
+}
+
+/// Low bits of a block's words, W − q·d′.
+fn block_low_bits(plan: &SweepPlan) -> u32 {
+    plan.width().bits() - plan.base().q() * block_digits(plan)
+}
+
 /// The scan's running state inside one chunk.
+///
+/// **Injectivity by blocks.** The chunk (depth d) is cut into the blocks of depth d′ ≥ d; the
+/// bitmap holds one block's outputs (their low W − q·d′ bits) and is cleared at each block's
+/// first word. With the chunk nested (the consecutive test), f is injective on it iff it is
+/// injective on every block and every node of depths d..d′ sends its children to distinct
+/// digits: then blocks have distinct image prefixes, and within a block the bitmap decides.
+/// (Only if: two children sent to one digit map, each injectively and so onto, into the same
+/// subtree.) The children's digits are checked at their first words, one set per depth.
 struct ChunkScan<'a> {
     plan: &'a SweepPlan,
+    /// W, q and d, read per block.
+    width: u32,
+    q: u32,
+    chunk_digits: u32,
     free_bits: [u8; 65],
+    /// By trailing zeros of x: the shallowest depth k ≥ d whose child x starts (its low
+    /// W − q(k + 1) bits are zero).
+    first_child_depth: [u8; 65],
+    /// Low bits of a block (W − q·d′) as a mask.
     low_mask: u64,
     law_mask: u64,
+    /// Child starts of depths d..d′ have these bits zero (`u64::MAX` when d′ = d).
+    block_mask: u64,
+    /// Per depth d..d′, the output digits the current node's children have taken.
+    taken: Vec<[u64; 4]>,
+    /// The bitmap word [`ChunkScan::mark`] holds, and its value (newer than the bitmap's).
+    word: usize,
+    bits: u64,
     prev: u64,
     cells: Vec<Vec<u64>>,
 }
@@ -158,6 +203,8 @@ impl ChunkScan<'_> {
         node: &mut [Vec<u8>],
     ) -> Result<(), (u64, SweepFailure)> {
         let mask = self.plan.width().mask();
+        // The mark's bitmap word and the previous output live in registers for the frame.
+        let (mut word, mut bits, mut prev) = (self.word, self.bits, self.prev);
         for (i, &y) in out.iter().enumerate() {
             let x = start + i as u64;
             let y: u64 = y.into();
@@ -172,7 +219,7 @@ impl ChunkScan<'_> {
             }
             let free = self.free_bits[x.trailing_zeros() as usize];
             if BINARY {
-                if (self.prev ^ y) >> (free - 1) != 1 {
+                if (prev ^ y) >> (free - 1) != 1 {
                     return Err((
                         x,
                         SweepFailure::Collision {
@@ -182,41 +229,109 @@ impl ChunkScan<'_> {
                     ));
                 }
             } else {
-                if (self.prev ^ y) >> free != 0 {
-                    let f = self
-                        .plan
-                        .step_failure(x, self.prev, y)
-                        .expect("failed step");
+                if (prev ^ y) >> free != 0 {
+                    let f = self.plan.step_failure(x, prev, y).expect("failed step");
                     return Err((x, f));
                 }
-                self.mark(x, y, bitmap)?;
+                if x & self.block_mask == 0 {
+                    // A new block: the bitmap is cleared, so is the word held.
+                    self.child_start(x, y, bitmap)?;
+                    (word, bits) = (0, 0);
+                }
+                mark(x, y, self.low_mask, bitmap, &mut word, &mut bits)?;
             }
             if x & self.law_mask == 0 {
                 self.record_law(x, y, node);
             }
-            self.prev = y;
+            prev = y;
+        }
+        (self.word, self.bits, self.prev) = (word, bits, prev);
+        Ok(())
+    }
+
+    /// At the first word `x` (output `y`) of a child of some nodes of depths d..d′: checks
+    /// the child's digit against those its siblings took, and clears the bitmap when a block
+    /// begins. A repeated digit is a collision (its partner found by a rescan, so it is
+    /// reported as input 0 here).
+    #[cold]
+    fn child_start(
+        &mut self,
+        x: u64,
+        y: u64,
+        bitmap: &mut [u64],
+    ) -> Result<(), (u64, SweepFailure)> {
+        let (w, q, d) = (self.width, self.q, self.chunk_digits);
+        let digit_mask = (1u64 << q) - 1;
+        let depths = self.taken.len() as u32;
+        let shallowest = u32::from(self.first_child_depth[x.trailing_zeros() as usize]);
+        for k in shallowest..d + depths {
+            let free = w - q * (k + 1);
+            let taken = &mut self.taken[(k - d) as usize];
+            if (x >> free) & digit_mask == 0 {
+                *taken = [0; 4];
+            }
+            let digit = ((y >> free) & digit_mask) as usize;
+            if taken[digit / 64] >> (digit % 64) & 1 != 0 {
+                return Err((
+                    x,
+                    SweepFailure::Collision {
+                        inputs: [0, x],
+                        output: y,
+                    },
+                ));
+            }
+            taken[digit / 64] |= 1 << (digit % 64);
+        }
+        if x & self.low_mask == 0 {
+            match bitmap {
+                [only] => *only = 0,
+                _ => bitmap.fill(0),
+            }
+            (self.word, self.bits) = (0, 0);
         }
         Ok(())
     }
 
-    /// Marks output `y` of input `x` in the chunk's bitmap; a second mark is a collision (the
-    /// other input is found by a rescan, so it is reported as input 0 here).
-    #[inline(always)]
-    fn mark(&self, x: u64, y: u64, bitmap: &mut [u64]) -> Result<(), (u64, SweepFailure)> {
-        let low = y & self.low_mask;
-        let (word, bit) = ((low >> 6) as usize, low & 63);
-        if bitmap[word] >> bit & 1 != 0 {
-            return Err((
-                x,
-                SweepFailure::Collision {
-                    inputs: [0, x],
-                    output: y,
-                },
-            ));
-        }
-        bitmap[word] |= 1 << bit;
-        Ok(())
+    /// [`mark`] with the word this scan holds.
+    fn mark(&mut self, x: u64, y: u64, bitmap: &mut [u64]) -> Result<(), (u64, SweepFailure)> {
+        mark(x, y, self.low_mask, bitmap, &mut self.word, &mut self.bits)
     }
+}
+
+/// Marks output `y` of input `x` in the block's bitmap (its low bits, `low_mask`); a second
+/// mark is a collision (the other input is found by a rescan, so it is reported as input 0
+/// here).
+///
+/// The bitmap word last touched is held in `bits` (index `word`) and written back only when
+/// another word is touched: a node's children land in one word, and a load that waits on the
+/// store just before it would chain every word's mark to the previous one.
+#[inline(always)]
+fn mark(
+    x: u64,
+    y: u64,
+    low_mask: u64,
+    bitmap: &mut [u64],
+    word: &mut usize,
+    bits: &mut u64,
+) -> Result<(), (u64, SweepFailure)> {
+    let low = y & low_mask;
+    let (at, bit) = ((low >> 6) as usize, 1u64 << (low & 63));
+    if at != *word {
+        bitmap[*word] = *bits;
+        *word = at;
+        *bits = bitmap[at];
+    }
+    if *bits & bit != 0 {
+        return Err((
+            x,
+            SweepFailure::Collision {
+                inputs: [0, x],
+                output: y,
+            },
+        ));
+    }
+    *bits |= bit;
+    Ok(())
 }
 
 /// Evaluates words `start..start + len` into the worker's frame and runs `f` on the outputs.
@@ -311,10 +426,20 @@ fn scan_chunk_with<const BINARY: bool>(
         *slot = plan.free_bits_after(1u64 << tz) as u8;
     }
     let cells = node_cells(plan.base().base());
+    let blocks = block_digits(plan);
+    let mut first_child_depth = [0u8; 65];
+    for (zeros, slot) in first_child_depth.iter_mut().enumerate() {
+        let zeros = (zeros as u32).min(w);
+        *slot = (w - zeros).div_ceil(q).saturating_sub(1).max(d) as u8;
+    }
     let mut st = ChunkScan {
         plan,
+        width: w,
+        q,
+        chunk_digits: d,
         free_bits,
-        low_mask: plan.chunk_words() - 1,
+        first_child_depth,
+        low_mask: (1u64 << block_low_bits(plan)) - 1,
         // Child starts of depths d..L have their low W − qL bits zero; none when no depth
         // lies below the chunk's.
         law_mask: if laws == 0 {
@@ -322,6 +447,16 @@ fn scan_chunk_with<const BINARY: bool>(
         } else {
             (1u64 << (w - q * plan.law_depths())) - 1
         },
+        // Every child start of depths d..d′ − 1 has at least its low W − q·d′ bits zero.
+        block_mask: if blocks == d {
+            u64::MAX
+        } else {
+            (1u64 << block_low_bits(plan)) - 1
+        },
+        taken: vec![[0; 4]; (blocks - d) as usize],
+        // The bitmap is cleared just below.
+        word: 0,
+        bits: 0,
         prev: 0,
         cells: vec![vec![0; cells]; laws as usize],
     };
@@ -348,6 +483,9 @@ fn scan_chunk_with<const BINARY: bool>(
                             output: first,
                         },
                     ));
+                }
+                if !BINARY {
+                    st.child_start(start, first, bitmap)?;
                 }
                 st.mark(start, first, bitmap)?;
                 if laws > 0 {

@@ -5,10 +5,10 @@ use gartowen_oracles::inspector::{inspect_exhaustive, NodeLaw};
 use gartowen_owen::{FullTreeOwen, OwenVariant};
 
 /// A map given by a closure, at the widths listed (for broken and partial variants).
-struct Mapped<F> {
-    f: F,
-    base: PowerOfTwoBase,
-    widths: Vec<u32>,
+pub(super) struct Mapped<F> {
+    pub(super) f: F,
+    pub(super) base: PowerOfTwoBase,
+    pub(super) widths: Vec<u32>,
 }
 
 impl<F: Fn(u64, u32) -> u64 + Send + Sync> Scrambler for Mapped<F> {
