@@ -162,6 +162,23 @@ def scrambler_table(ns):
     return lines
 
 
+def consecutive_table(ns):
+    group = "scramble_batch_u32_consecutive/"
+    ref = ns.get(group + "lk-hash")
+    rows = [(k[len(group):], v) for k, v in ns.items() if k.startswith(group)]
+    if not rows:
+        return []
+    lines = ["| scrambler, consecutive 32-bit words (the every-word sweep's input) | batch ns "
+             "| / `lk-hash` |", "|---|---|---|"]
+    for name, v in rows:
+        label = f"`{name}`".replace(" (Avx512 kernel)`", "`, 64-bit gather kernel").replace(
+            " (Avx512Narrow kernel)`", "`, narrow gather kernel").replace(
+            " (Portable kernel)`", "`, portable kernel")
+        lines.append(f"| {label} | {fmt_ns(v)} | {v / ref:.2f} |" if ref else
+                     f"| {label} | {fmt_ns(v)} | – |")
+    return lines
+
+
 def command_table(rows):
     ref = rows["exhaustive lk-hash"]["seconds"]
     lines = ["| command (release build, 2 threads unless set) | seconds | peak MB | ratio |",
@@ -251,6 +268,13 @@ def block(m, ns, rows, pc, pb, date):
                 "32-bit coordinate. ART rows without a kernel named run the kernel the CPU picks "
                 "(with AVX-512, the narrow gather kernel); the rows naming a kernel run that one "
                 "on the same tables:", ""] + scrambler_table(ns) + [""]
+        consecutive = consecutive_table(ns)
+        if consecutive:
+            out += ["The batch path on consecutive words, ns per coordinate (a group of lanes "
+                    "walks the steps its words share once; `art-owen-8p`, whose 6-bit steps "
+                    "cannot hold its 256 symbols in a 32-bit entry, always runs the 64-bit "
+                    "gather kernel):", ""]
+            out += consecutive + [""]
     if rows:
         out += ["Whole commands, one run each under `/usr/bin/time`:", ""] + command_table(rows)
         out += [""]

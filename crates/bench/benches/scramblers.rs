@@ -127,6 +127,44 @@ fn scramblers(c: &mut Criterion) {
     }
     group.finish();
 
+    // Consecutive words (what the every-word sweep and index scrambling feed the batch path):
+    // ART's groups share their leading steps and read the last one from one cache line. Every
+    // kernel the CPU runs, so the portable kernel's figure for the sweep is here too.
+    let start = 0x5A5A_0000u32;
+    let consecutive: Vec<u32> = (0..WORDS as u32).map(|i| start + i).collect();
+    let mut group = c.benchmark_group("scramble_batch_u32_consecutive");
+    group.throughput(Throughput::Elements(WORDS as u64));
+    for (request, s) in built.iter().filter(|(r, _)| r == "lk-hash") {
+        group.bench_function(BenchmarkId::from_parameter(request), |b| {
+            b.iter(|| {
+                buffer.copy_from_slice(&consecutive);
+                s.scramble_batch_u32(&mut buffer, 3);
+                black_box(buffer[WORDS - 1])
+            })
+        });
+    }
+    let mut runs = Vec::new();
+    for name in ["art-owen-2", "art-owen-16p", "art-owen-8p"] {
+        let variant = gartowen::art::registry::variant_of(name).expect("an ART variant");
+        let art =
+            gartowen::art::ArtOwen::new(variant, gartowen::art::registry::DEFAULT_SYMBOLS, SEED)
+                .expect("the default alphabet");
+        for kernel in gartowen::art::BatchKernel::available() {
+            let art = art.with_kernel(kernel).expect("an available kernel");
+            runs.push((format!("{name} ({kernel:?} kernel)"), art));
+        }
+    }
+    for (id, art) in &runs {
+        group.bench_function(BenchmarkId::from_parameter(id), |b| {
+            b.iter(|| {
+                buffer.copy_from_slice(&consecutive);
+                gartowen::core::Scrambler::scramble_batch_u32(art, &mut buffer, 3);
+                black_box(buffer[WORDS - 1])
+            })
+        });
+    }
+    group.finish();
+
     let mut group = c.benchmark_group("sequence_point_u32");
     group.throughput(Throughput::Elements(WORDS as u64));
     for kind in SequenceKind::ALL {

@@ -249,10 +249,10 @@ impl ChunkScan<'_> {
         Ok(())
     }
 
-    /// At the first word `x` (output `y`) of a child of some nodes of depths d..d′: checks
-    /// the child's digit against those its siblings took, and clears the bitmap when a block
-    /// begins. A repeated digit is a collision (its partner found by a rescan, so it is
-    /// reported as input 0 here).
+    /// At the first word `x` (output `y`) of a block, which starts a child of one or more
+    /// nodes of depths d..d′: checks each such child's digit against those its siblings took,
+    /// and clears the bitmap. A repeated digit is a collision (its partner found by a rescan,
+    /// so it is reported as input 0 here).
     #[cold]
     fn child_start(
         &mut self,
@@ -282,13 +282,11 @@ impl ChunkScan<'_> {
             }
             taken[digit / 64] |= 1 << (digit % 64);
         }
-        if x & self.low_mask == 0 {
-            match bitmap {
-                [only] => *only = 0,
-                _ => bitmap.fill(0),
-            }
-            (self.word, self.bits) = (0, 0);
+        match bitmap {
+            [only] => *only = 0,
+            _ => bitmap.fill(0),
         }
+        (self.word, self.bits) = (0, 0);
         Ok(())
     }
 
