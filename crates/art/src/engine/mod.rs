@@ -31,6 +31,7 @@
 //! verify battery's dimension tests). Cost: two XORs per word.
 
 mod batch;
+mod lanes;
 #[cfg(target_arch = "x86_64")]
 mod simd;
 

@@ -8,7 +8,7 @@
 //! aligned 64-byte run of the table row, so one load and a lane permutation replace the
 //! gather. Consecutive words (the every-word sweep, index scrambling) are such groups.
 
-use super::batch::{PrefixMemo, Word};
+use super::lanes::{PrefixMemo, Word};
 use super::{GROUPS, LANES};
 use std::arch::x86_64::*;
 
