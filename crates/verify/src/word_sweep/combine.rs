@@ -1,7 +1,7 @@
 //! Joining the pieces of one dimension: coverage (every chunk exactly once), the seams between
 //! pieces, injectivity of the chunk images π, and the node laws by depth.
 
-use super::scan::{node_cell, node_cells};
+use super::chunk_scan::{node_cell, node_cells};
 use super::{SweepError, SweepFailure, SweepPiece, SweepPlan};
 use crate::stats::chi_square;
 use gartowen_core::{PowerOfTwoBase, Width};

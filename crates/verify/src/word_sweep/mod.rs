@@ -38,6 +38,7 @@
 //! for any thread count. [`sweep`] checks a range of chunks and [`combine`] joins the pieces of a
 //! dimension (from one run or many shards), checking the seams between pieces and π.
 
+mod chunk_scan;
 mod combine;
 mod scan;
 

@@ -1,4 +1,4 @@
-use super::scan::{node_cell, node_cells};
+use super::chunk_scan::{node_cell, node_cells};
 use super::*;
 use gartowen_core::{Claim, Permutation, SplitMix64};
 use gartowen_oracles::inspector::{inspect_exhaustive, NodeLaw};
