@@ -74,11 +74,11 @@ pub(super) struct ChunkScan<'a> {
     /// By trailing zeros of x: the shallowest depth k ≥ d whose child x starts (its low
     /// W − q(k + 1) bits are zero).
     first_child_depth: [u8; 65],
-    /// Low bits of a block (W − q·d′) as a mask.
+    /// Low bits of a block (W − q·d′) as a mask. A block's first word has them zero, and
+    /// so has every child start of depths d..d′ − 1; inside a chunk no other word does (when
+    /// d′ = d the block is the chunk, whose first word the caller handles).
     low_mask: u64,
     law_mask: u64,
-    /// Child starts of depths d..d′ have these bits zero (`u64::MAX` when d′ = d).
-    block_mask: u64,
     /// Per depth d..d′, the output digits the current node's children have taken.
     taken: Vec<[u64; 4]>,
     /// The bitmap word [`ChunkScan::mark`] holds, and its value (newer than the bitmap's).
@@ -118,12 +118,6 @@ impl<'a> ChunkScan<'a> {
                 u64::MAX
             } else {
                 (1u64 << (w - q * plan.law_depths())) - 1
-            },
-            // Every child start of depths d..d′ − 1 has at least its low W − q·d′ bits zero.
-            block_mask: if blocks == d {
-                u64::MAX
-            } else {
-                (1u64 << block_low_bits(plan)) - 1
             },
             taken: vec![[0; 4]; (blocks - d) as usize],
             // The bitmap is cleared just below.
@@ -209,7 +203,7 @@ impl<'a> ChunkScan<'a> {
                     let f = self.plan.step_failure(x, prev, y).expect("failed step");
                     return Err((x, f));
                 }
-                if x & self.block_mask == 0 {
+                if x & self.low_mask == 0 {
                     // A new block: the bitmap is cleared, so is the word held.
                     self.child_start(x, y, bitmap)?;
                     (word, bits) = (0, 0);
