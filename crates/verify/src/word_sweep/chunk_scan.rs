@@ -34,9 +34,9 @@ pub fn node_cells(b: u32) -> usize {
 }
 
 /// Most low bits of a block, the subtree whose outputs one bitmap holds (see [`ChunkScan`]),
-/// unless a whole digit has more: 2^6 bits, one machine word, which the scan keeps in a
-/// register.
-const BLOCK_BITS: u32 = 6;
+/// unless a whole digit has more: 2^5 bits, held in a register by the scalar scan and in one
+/// 32-bit lane by the sixteen-word scan (`group_scan`).
+const BLOCK_BITS: u32 = 5;
 
 /// The depth d′ ≥ d of the blocks whose outputs one bitmap holds: the shallowest whose
 /// subtrees have at most 2^max([`BLOCK_BITS`], q) words (whole digits always reach it: after
@@ -70,20 +70,22 @@ pub(super) struct ChunkScan<'a> {
     width: u32,
     q: u32,
     chunk_digits: u32,
-    free_bits: [u8; 65],
+    pub(super) free_bits: [u8; 65],
     /// By trailing zeros of x: the shallowest depth k ≥ d whose child x starts (its low
     /// W − q(k + 1) bits are zero).
     first_child_depth: [u8; 65],
     /// Low bits of a block (W − q·d′) as a mask. A block's first word has them zero, and
     /// so has every child start of depths d..d′ − 1; inside a chunk no other word does (when
     /// d′ = d the block is the chunk, whose first word the caller handles).
-    low_mask: u64,
-    law_mask: u64,
+    pub(super) low_mask: u64,
+    pub(super) law_mask: u64,
     /// Per depth d..d′, the output digits the current node's children have taken.
     taken: Vec<[u64; 4]>,
     /// The bitmap word [`ChunkScan::mark`] holds, and its value (newer than the bitmap's).
     word: usize,
     bits: u64,
+    /// The sixteen-word scan's one-hot OR of the current block's outputs so far.
+    pub(super) block_hot: u32,
     pub(super) prev: u64,
     pub(super) cells: Vec<Vec<u64>>,
 }
@@ -123,6 +125,7 @@ impl<'a> ChunkScan<'a> {
             // The bitmap is cleared just below.
             word: 0,
             bits: 0,
+            block_hot: 0,
             prev: 0,
             cells: vec![vec![0; cells]; laws as usize],
         }
@@ -230,6 +233,28 @@ impl<'a> ChunkScan<'a> {
         y: u64,
         bitmap: &mut [u64],
     ) -> Result<(), (u64, SweepFailure)> {
+        if !self.child_digits(x, y) {
+            return Err((
+                x,
+                SweepFailure::Collision {
+                    inputs: [0, x],
+                    output: y,
+                },
+            ));
+        }
+        match bitmap {
+            [only] => *only = 0,
+            _ => bitmap.fill(0),
+        }
+        (self.word, self.bits) = (0, 0);
+        Ok(())
+    }
+
+    /// At a block's first word `x` (output `y`): takes the digit of each child it starts at
+    /// depths d..d′ in that depth's set (emptied at a node's first child); false when a sibling
+    /// already took it.
+    #[inline]
+    pub(super) fn child_digits(&mut self, x: u64, y: u64) -> bool {
         let (w, q, d) = (self.width, self.q, self.chunk_digits);
         let digit_mask = (1u64 << q) - 1;
         let depths = self.taken.len() as u32;
@@ -242,22 +267,11 @@ impl<'a> ChunkScan<'a> {
             }
             let digit = ((y >> free) & digit_mask) as usize;
             if taken[digit / 64] >> (digit % 64) & 1 != 0 {
-                return Err((
-                    x,
-                    SweepFailure::Collision {
-                        inputs: [0, x],
-                        output: y,
-                    },
-                ));
+                return false;
             }
             taken[digit / 64] |= 1 << (digit % 64);
         }
-        match bitmap {
-            [only] => *only = 0,
-            _ => bitmap.fill(0),
-        }
-        (self.word, self.bits) = (0, 0);
-        Ok(())
+        true
     }
 
     /// [`mark`] with the word this scan holds.

@@ -24,9 +24,10 @@
 //! of the same size, hence onto it; distinct chunks have distinct image sets, which therefore
 //! partition the words. Only if: a nested bijection maps chunk c onto the prefix-π(c) words, so two
 //! chunks with one image prefix would collide.) The same argument one level down decides a
-//! chunk's injectivity: its blocks of at most 2^15 words (a deeper depth d′) each need a
-//! bitmap of 4 KiB at most, and the nodes between depths d and d′ must send their children to
-//! distinct digits (checked at the children's first words).
+//! chunk's injectivity: its blocks (a deeper depth d′: at most 32 words, or one digit's worth)
+//! each need a bitmap of at most 256 bits, and the nodes between depths d and d′ must send their
+//! children to distinct digits (checked at the children's first words). Where blocks have 16 or
+//! 32 words, sixteen words are checked at a time (`group_scan`).
 //!
 //! **Node permutations come for free.** The node permutation σ_{k,p} maps digit e to digit k of
 //! f(p, e, 0, …, 0), the output of the first word of child (p, e). For depths k < d those words
@@ -40,6 +41,7 @@
 
 mod chunk_scan;
 mod combine;
+mod group_scan;
 mod scan;
 
 pub use combine::{combine, DepthLaw, SweepVerdict};
@@ -342,3 +344,5 @@ pub fn split_run(segments: &[u64], run: Range<u64>) -> Vec<(usize, Range<u64>)> 
 mod tests;
 #[cfg(test)]
 mod tests_collisions;
+#[cfg(test)]
+mod tests_groups;

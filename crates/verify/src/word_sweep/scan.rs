@@ -3,6 +3,7 @@
 //! records of the chunks joined into a piece.
 
 use super::chunk_scan::{block_low_bits, node_cells, ChunkScan};
+use super::group_scan::{self, GroupKernel, GroupLanes};
 use super::{SweepError, SweepFailure, SweepPlan};
 use gartowen_core::{Progress, Scrambler, Silent};
 use rayon::prelude::*;
@@ -37,8 +38,9 @@ pub struct SweepPiece {
     pub failure: Option<SweepFailure>,
     /// Node-law cell counts for depths d..L (one sparse list of (cell, count) per depth).
     pub node_cells: Vec<Vec<(u32, u64)>>,
-    /// Chunks scanned twice: the bitmap-free base-2 test found something there and the bitmap
-    /// scan named it (0 when everything passed; a diagnostic, not part of the verdict).
+    /// Chunks scanned twice: the bitmap-free base-2 test or the sixteen-word scan found
+    /// something there and the word-by-word scan named it (0 when everything passed; a
+    /// diagnostic, not part of the verdict).
     #[serde(default)]
     pub rescanned_chunks: u64,
 }
@@ -49,7 +51,8 @@ struct ChunkRecord {
     last: u64,
     failure: Option<SweepFailure>,
     cells: Vec<Vec<u64>>,
-    /// The binary test found something, so the chunk was scanned again with the bitmap.
+    /// The binary test or the group scan found something, so the chunk was scanned again word
+    /// by word.
     rescanned: bool,
 }
 
@@ -65,8 +68,9 @@ impl Scratch {
     fn new(plan: &SweepPlan) -> Scratch {
         let frame = FRAME.min(plan.chunk_words() as usize);
         let laws = (plan.law_depths() - plan.chunk_digits()) as usize;
+        let narrow = plan.width().bits() == 32 || group_scan::applies(plan);
         Scratch {
-            frame32: Vec::with_capacity(if plan.width().bits() == 32 { frame } else { 0 }),
+            frame32: Vec::with_capacity(if narrow { frame } else { 0 }),
             frame64: Vec::with_capacity(if plan.width().bits() == 32 { 0 } else { frame }),
             bitmap: vec![0; (1usize << block_low_bits(plan)).div_ceil(64)],
             node: vec![vec![0; plan.base().base() as usize]; laws],
@@ -128,8 +132,9 @@ impl FrameOut<'_> {
     }
 }
 
-/// Sweeps chunk `c`: in base 2 by the bitmap-free test, and again with the bitmap when that
-/// finds something, so that failures are named exactly as in the general scan.
+/// Sweeps chunk `c`: in base 2 by the bitmap-free test, elsewhere in groups of sixteen words
+/// where the blocks allow, and again word by word (with the bitmap) when those find something,
+/// so that failures are named exactly as in the general scan.
 fn scan_chunk(
     s: &dyn Scrambler,
     plan: &SweepPlan,
@@ -137,17 +142,95 @@ fn scan_chunk(
     c: u64,
     scratch: &mut Scratch,
     progress: &dyn Progress,
+    kernel: GroupKernel,
 ) -> ChunkRecord {
-    if plan.base().q() == 1 {
+    let fast = if plan.base().q() == 1 {
         let r = scan_chunk_with::<true>(s, plan, dim, c, scratch, progress);
-        if r.failure.is_none() {
-            return r;
-        }
+        r.failure.is_none().then_some(r)
+    } else if group_scan::applies(plan) {
+        scan_chunk_groups(s, plan, dim, c, scratch, progress, kernel)
+    } else {
+        return scan_chunk_with::<false>(s, plan, dim, c, scratch, progress);
+    };
+    fast.unwrap_or_else(|| {
         let mut again = scan_chunk_with::<false>(s, plan, dim, c, scratch, &Silent);
         again.rescanned = true;
-        return again;
+        again
+    })
+}
+
+/// Sweeps chunk `c` in groups of sixteen words; `None` when a check fails (to be named by the
+/// word-by-word scan).
+fn scan_chunk_groups(
+    s: &dyn Scrambler,
+    plan: &SweepPlan,
+    dim: u32,
+    c: u64,
+    scratch: &mut Scratch,
+    progress: &dyn Progress,
+    kernel: GroupKernel,
+) -> Option<ChunkRecord> {
+    let mut st = ChunkScan::new(plan);
+    let lanes = GroupLanes::new(plan, st.law_mask);
+    let start = plan.chunk_start(c);
+    let total = plan.chunk_words();
+    let mut first = 0;
+    let mut done = 0u64;
+    while done < total {
+        let len = (total - done).min(FRAME as u64) as usize;
+        let at = start + done;
+        let (out, node) = frame_u32(s, plan, dim, at, len, scratch);
+        if done == 0 {
+            first = u64::from(out[0]);
+        }
+        if !st.scan_groups(kernel, &lanes, at, out, done == 0, node) {
+            return None;
+        }
+        done += len as u64;
+        progress.advance(len as u64);
     }
-    scan_chunk_with::<false>(s, plan, dim, c, scratch, progress)
+    Some(ChunkRecord {
+        first,
+        last: st.prev,
+        failure: None,
+        cells: st.cells,
+        rescanned: false,
+    })
+}
+
+/// Evaluates words `start..start + len` as 32-bit outputs (for widths below 32, outputs above
+/// `u32::MAX` read as `u32::MAX`, which is out of range too) and the node-law scratch.
+fn frame_u32<'s>(
+    s: &dyn Scrambler,
+    plan: &SweepPlan,
+    dim: u32,
+    start: u64,
+    len: usize,
+    scratch: &'s mut Scratch,
+) -> (&'s [u32], &'s mut [Vec<u8>]) {
+    let Scratch {
+        frame32,
+        frame64,
+        node,
+        ..
+    } = scratch;
+    frame32.resize(len, 0);
+    if plan.width().bits() == 32 {
+        for (i, x) in frame32.iter_mut().enumerate() {
+            *x = start as u32 + i as u32;
+        }
+        s.scramble_batch_u32(frame32, dim);
+    } else {
+        frame64.resize(len, 0);
+        for (i, x) in frame64.iter_mut().enumerate() {
+            *x = start + i as u64;
+        }
+        s.scramble_batch(frame64, plan.width(), dim);
+        for (n, &y) in frame32.iter_mut().zip(frame64.iter()) {
+            *n = y.min(u64::from(u32::MAX)) as u32;
+        }
+    }
+    (frame32, node)
 }
 
 /// Sweeps chunk `c` with the binary test or the general one.
@@ -262,6 +345,19 @@ pub fn sweep(
     chunks: Range<u64>,
     progress: &dyn Progress,
 ) -> Result<SweepPiece, SweepError> {
+    sweep_with(s, plan, dim, chunks, progress, GroupKernel::detect())
+}
+
+/// [`sweep`] with groups of sixteen words scanned by `kernel` (the piece is the same for every
+/// kernel).
+pub(super) fn sweep_with(
+    s: &dyn Scrambler,
+    plan: &SweepPlan,
+    dim: u32,
+    chunks: Range<u64>,
+    progress: &dyn Progress,
+    kernel: GroupKernel,
+) -> Result<SweepPiece, SweepError> {
     plan.check_range(&chunks)?;
     let failed_at = AtomicU64::new(u64::MAX);
     let indices: Vec<u64> = chunks.clone().collect();
@@ -273,7 +369,7 @@ pub fn sweep(
                 if c > failed_at.load(Ordering::Relaxed) {
                     return None;
                 }
-                let r = scan_chunk(s, plan, dim, c, scratch, progress);
+                let r = scan_chunk(s, plan, dim, c, scratch, progress, kernel);
                 if r.failure.is_some() {
                     failed_at.fetch_min(c, Ordering::Relaxed);
                 }

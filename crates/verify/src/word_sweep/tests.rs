@@ -183,16 +183,18 @@ fn the_base_2_test_passes_a_true_scramble_without_the_bitmap_and_calls_it_on_a_b
     let piece = sweep(&bad, &plan, 0, 0..plan.chunks(), &|_| {}).unwrap();
     assert!(piece.failure.is_some());
     assert!(piece.rescanned_chunks >= 1);
-    // Base 4 never takes the binary test.
-    let plan4 = SweepPlan::new(w(16), b(2)).unwrap();
-    let p4 = sweep(
-        &swapped(2, 16, 0x1234, 0x1224),
-        &plan4,
+    // Base 32 at 16 bits takes neither the binary test nor groups (blocks of 2 words).
+    let plan32 = SweepPlan::new(w(16), b(5)).unwrap();
+    let p32 = sweep(
+        &swapped(5, 16, 0x1234, 0x1224),
+        &plan32,
         0,
-        0..plan4.chunks(),
+        0..plan32.chunks(),
         &|_| {},
     );
-    assert_eq!(p4.unwrap().rescanned_chunks, 0);
+    let p32 = p32.unwrap();
+    assert!(p32.failure.is_some());
+    assert_eq!(p32.rescanned_chunks, 0);
 }
 
 #[test]
