@@ -50,9 +50,12 @@ pub const BATCH_TABLES_AFTER_WORDS: u64 = 1 << 18;
 pub(super) struct BatchTables {
     /// Symbol · 2^(step bits) + step digits → E's top 32 bits | next symbol.
     table: Vec<u64>,
-    /// The table's entries as 32 bits (see [`narrow`]); empty unless the symbols fit in a
-    /// step's bits.
+    /// The table's entries as 32 bits (see [`narrow`]); empty unless the symbols fit in two
+    /// steps' bits.
     narrow: Vec<u32>,
+    /// Steps the narrow kernel walks in `table` before it turns to `narrow` (see
+    /// [`narrow_wide_steps`]).
+    wide_steps: u32,
     /// The top 32 bits of each symbol's code, for the narrow kernel's tail digit (empty
     /// without the narrow table).
     codes_top: Vec<u32>,
@@ -72,6 +75,7 @@ impl BatchTables {
                 && table.iter().all(|e| e & 0xFFFF < symbols),
             "batch table out of shape"
         );
+        let wide_steps = narrow_wide_steps(step_bits, symbols).unwrap_or(0);
         let narrow = narrow(&table, step_bits, symbols);
         let codes_top = if narrow.is_empty() {
             Vec::new()
@@ -84,12 +88,13 @@ impl BatchTables {
                     && codes_top.len() == art.codes.len()
                     && narrow
                         .iter()
-                        .all(|&e| u64::from(e) & ((1 << step_bits) - 1) < symbols)),
+                        .all(|&e| u64::from(e) & ((1 << (wide_steps * step_bits)) - 1) < symbols)),
             "narrow table out of shape"
         );
         BatchTables {
             table,
             narrow,
+            wide_steps,
             codes_top,
         }
     }
@@ -104,6 +109,7 @@ impl BatchTables {
 static NO_BATCH_TABLES: BatchTables = BatchTables {
     table: Vec::new(),
     narrow: Vec::new(),
+    wide_steps: 0,
     codes_top: Vec::new(),
 };
 
@@ -140,23 +146,32 @@ pub(super) fn pack(steps: &[Step], step_bits: u32) -> Vec<u64> {
 }
 
 /// The narrow table: the batch table's entries as 32 bits, `(E's top 32 bits with the low
-/// step_bits cleared) | next`, when every symbol fits in `step_bits` bits (otherwise empty).
+/// k·step_bits cleared) | next`, where k = [`narrow_wide_steps`] (empty when there is none).
 ///
 /// **Why the cleared bits are never missed.** Step i contributes `E_i >> (SB·i)` to the
-/// accumulator's top 32 bits, so from step 1 on the low SB bits of E's top half shift out of
-/// them. Only step 0 needs all 32 bits, and step 0 reads one row (the root's) of the batch
-/// table. Entries of 4 bytes halve the table the later steps' gathers walk (256 KiB for 256
-/// symbols and 8-bit steps): measured on a Zen 4 core (1 MiB L2, 72-entry L1 TLB), the
+/// accumulator's top 32 bits, so from step k on the low k·SB bits of E's top half shift out of
+/// them. Only steps 0..k need all 32 bits, and they read the batch table (step 0 only its
+/// root's row). Entries of 4 bytes halve the table the later steps' gathers walk (256 KiB for
+/// 256 symbols and 8-bit steps): measured on a Zen 4 core (1 MiB L2, 72-entry L1 TLB), the
 /// gathers were a quarter slower on a 512 KiB table than on 256 KiB.
 pub(super) fn narrow(table: &[u64], step_bits: u32, symbols: u64) -> Vec<u32> {
-    if symbols > 1 << step_bits {
+    let Some(k) = narrow_wide_steps(step_bits, symbols) else {
         return Vec::new();
-    }
-    let low = (1u64 << step_bits) - 1;
+    };
+    let low = (1u64 << (k * step_bits)) - 1;
     table
         .iter()
         .map(|&e| (((e >> 32) & !low) | (e & low)) as u32)
         .collect()
+}
+
+/// The steps k whose entries the narrow kernel reads from the batch table before it turns to
+/// the narrow one: the fewest whose bits hold every symbol (the narrow entries keep the next
+/// symbol in their low k·step_bits bits), 1 or 2; `None` when two steps' bits (or the batch
+/// entries' 16) do not hold them. Two steps serve 256 symbols in bases 8, 32, 64 and 128,
+/// whose batch steps have 6, 5, 6 and 7 bits.
+pub(super) fn narrow_wide_steps(step_bits: u32, symbols: u64) -> Option<u32> {
+    (1..=2).find(|&k| k * step_bits <= 16 && symbols <= 1 << (k * step_bits))
 }
 
 /// Walks [`LANES`] words (W ≤ 32 bits) through `steps` whole steps of the batch `table`:
@@ -200,11 +215,11 @@ pub enum BatchKernel {
     /// AVX-512F gathers of the 64-bit table entries: one instruction loads a step's entries
     /// for eight lanes (x86-64 CPUs that report AVX-512F at run time).
     Avx512,
-    /// AVX-512F with sixteen 32-bit lanes per register: step 0 gathers the root's row of the
-    /// 64-bit table, the later steps a narrow table of 32-bit entries (half the bytes; the
-    /// layout is argued beside `narrow` in `engine/batch.rs`). Where the alphabet does not
-    /// fit in a step's bits there is no narrow table and this kernel runs
-    /// [`BatchKernel::Avx512`].
+    /// AVX-512F with sixteen 32-bit lanes per register: step 0 (and step 1 where the alphabet
+    /// needs two steps' bits) gathers the 64-bit table, the later steps a narrow table of
+    /// 32-bit entries (half the bytes; the layout is argued beside `narrow` in
+    /// `engine/batch.rs`). Where the alphabet does not fit in two steps' bits there is no
+    /// narrow table and this kernel runs [`BatchKernel::Avx512`].
     Avx512Narrow,
 }
 
@@ -408,6 +423,7 @@ impl ArtOwen {
                 walk_avx512_narrow::<SB, T>(
                     table,
                     &t.narrow,
+                    t.wide_steps,
                     &t.codes_top,
                     self.q(),
                     block,

@@ -171,21 +171,22 @@ unsafe fn store8<T: Word>(block: &mut [T], g: usize, y: __m512i) {
 /// [`GROUPS`] · [`LANES`] words per block as [`walk_avx512`].
 pub(super) const NARROW_GROUPS: usize = GROUPS * LANES / 16;
 
-/// [`walk_avx512`] with 32-bit lanes and the narrow table (see `batch::narrow`): step 0
-/// gathers the root's row of `table` (its full 32-bit contribution and next symbol, two
-/// gathers of eight lanes), the later steps gather 32-bit entries of `narrow`, sixteen lanes
-/// per gather. The narrow table is half the bytes of `table`, so more of it stays in the
+/// [`walk_avx512`] with 32-bit lanes and the narrow table (see `batch::narrow`): steps
+/// 0..`wide` gather `table` (step 0 its root's row: full 32-bit contribution and next symbol,
+/// two gathers of eight lanes), the later steps gather 32-bit entries of `narrow`, sixteen
+/// lanes per gather. The narrow table is half the bytes of `table`, so more of it stays in the
 /// first-level TLB and the caches. Same words, same return convention as [`walk_avx512`];
 /// `codes_top` holds the top 32 bits of each symbol's code (for the tail digit).
 ///
 /// # Safety
-/// As for [`walk_avx512`], and `narrow` must hold `symbols << SB` entries whose low SB bits
-/// (the next symbol) are below `symbols`, with `codes_top.len() == symbols`.
+/// As for [`walk_avx512`], and `narrow` must hold `symbols << SB` entries whose low
+/// `wide`·SB bits (the next symbol) are below `symbols`, with `codes_top.len() == symbols`.
 #[target_feature(enable = "avx512f")]
 #[allow(clippy::too_many_arguments)]
 pub(super) unsafe fn walk_avx512_narrow<const SB: u32, T: Word>(
     table: &[u64],
     narrow: &[u32],
+    wide: u32,
     codes_top: &[u32],
     q: u32,
     block: &mut [T],
@@ -239,9 +240,9 @@ pub(super) unsafe fn walk_avx512_narrow<const SB: u32, T: Word>(
             root,
         );
         let lz = diff.leading_zeros();
-        // Only the last step's lowest 4 bits differ, and that step reads `narrow` (not step
-        // 0): one line of 16 entries.
-        one_line[g] = SB >= 4 && steps >= 2 && lz < consumed && lz + 4 >= consumed;
+        // Only the last step's lowest 4 bits differ, and that step reads `narrow` (not a
+        // wide step): one line of 16 entries.
+        one_line[g] = SB >= 4 && steps > wide && lz < consumed && lz + 4 >= consumed;
         shared[g] = start.steps;
         // A shift by 32 (every step shared) leaves no bits, as it should.
         bits[g] = _mm512_sll_epi32(b, count(SB * start.steps));
@@ -249,20 +250,27 @@ pub(super) unsafe fn walk_avx512_narrow<const SB: u32, T: Word>(
         // The narrow accumulator is the top half of the wide one (see `batch::narrow`).
         acc[g] = _mm512_set1_epi32((start.acc >> 32) as u32 as i32);
     }
-    let next_mask = _mm512_set1_epi32(((1u32 << SB) - 1) as i32);
+    let next_mask = _mm512_set1_epi32(((1u32 << (wide * SB)) - 1) as i32);
     let sb = count(SB);
     let top = count(32 - SB);
-    if steps > 0 {
-        // Step 0 reads the root's row of the wide table: full contribution and next symbol.
-        let join = |l: __m256i, h: __m256i| _mm512_inserti64x4::<1>(_mm512_castsi256_si512(l), h);
-        let row = _mm512_set1_epi32((root << SB) as i32);
+    // Steps 0..wide read the wide table: full contribution and next symbol (step 0 from the
+    // root's row, where every lane's symbol is the root).
+    let join = |l: __m256i, h: __m256i| _mm512_inserti64x4::<1>(_mm512_castsi256_si512(l), h);
+    for i in 0..wide.min(steps) {
+        let shift = count(SB * i);
         for g in 0..NARROW_GROUPS {
-            if shared[g] > 0 {
+            if i < shared[g] {
                 continue;
             }
+            let row = if i == 0 {
+                _mm512_set1_epi32((root << SB) as i32)
+            } else {
+                _mm512_sll_epi32(s[g], sb)
+            };
             let idx = _mm512_or_si512(row, _mm512_srl_epi32(bits[g], top));
             bits[g] = _mm512_sll_epi32(bits[g], sb);
-            // SAFETY: the root < symbols and the digits < 2^SB, so every index < table.len().
+            // SAFETY: every lane's symbol < symbols and its digits < 2^SB (the table
+            // invariant), so every index < table.len().
             let (lo, hi) = unsafe {
                 (
                     _mm512_i32gather_epi64::<8>(_mm512_castsi512_si256(idx), table.as_ptr().cast()),
@@ -272,17 +280,18 @@ pub(super) unsafe fn walk_avx512_narrow<const SB: u32, T: Word>(
                     ),
                 )
             };
-            acc[g] = join(
+            let e = join(
                 _mm512_cvtepi64_epi32(_mm512_srli_epi64::<32>(lo)),
                 _mm512_cvtepi64_epi32(_mm512_srli_epi64::<32>(hi)),
             );
+            acc[g] = _mm512_xor_si512(acc[g], _mm512_srl_epi32(e, shift));
             s[g] = _mm512_and_si512(
                 join(_mm512_cvtepi64_epi32(lo), _mm512_cvtepi64_epi32(hi)),
                 _mm512_set1_epi32(0xFFFF),
             );
         }
     }
-    for i in 1..steps {
+    for i in wide..steps {
         let shift = count(SB * i);
         for g in 0..NARROW_GROUPS {
             if i < shared[g] {
@@ -302,7 +311,7 @@ pub(super) unsafe fn walk_avx512_narrow<const SB: u32, T: Word>(
                 // SAFETY: every index < narrow.len(), by the caller's invariant.
                 unsafe { _mm512_i32gather_epi32::<4>(idx, narrow.as_ptr().cast()) }
             };
-            // A shift of SB or more drops the next symbol's bits.
+            // A shift of wide·SB or more drops the next symbol's bits.
             acc[g] = _mm512_xor_si512(acc[g], _mm512_srl_epi32(e, shift));
             s[g] = _mm512_and_si512(e, next_mask);
         }
