@@ -122,7 +122,10 @@ impl ChunkScan<'_> {
         }
     }
 
-    /// [`ChunkScan::scan_groups_with`] compiled with AVX-512.
+    /// [`ChunkScan::scan_groups_with`] in AVX-512 registers: a group's predecessors are its
+    /// outputs moved up one lane (the group before's last in lane 0), the lane test is one
+    /// ternary-logic instruction and a mask test, and the block's one-hot words are ORed
+    /// lane-wise, across lanes only at the block's end.
     ///
     /// # Safety
     /// The CPU must support AVX-512F, VL and BW.
@@ -136,7 +139,57 @@ impl ChunkScan<'_> {
         first: bool,
         node: &mut [Vec<u8>],
     ) -> bool {
-        self.scan_groups_with(c, start, out, first, node)
+        use std::arch::x86_64::*;
+        debug_assert!(start.is_multiple_of(GROUP as u64) && out.len().is_multiple_of(GROUP));
+        // SAFETY: a 64-byte load of the 16 constants.
+        let keep = unsafe { _mm512_loadu_si512(c.keep.as_ptr().cast()) };
+        let over = _mm512_set1_epi32(c.over as i32);
+        let low = _mm512_set1_epi32(c.low as i32);
+        let one = _mm512_set1_epi32(1);
+        let mut prev = self.prev as u32;
+        let mut before_group = _mm512_set1_epi32(prev as i32);
+        let mut hot = _mm512_castsi128_si512(_mm_cvtsi32_si128(self.block_hot as i32));
+        for (g, lanes) in out.chunks_exact(GROUP).enumerate() {
+            let x0 = start + (g * GROUP) as u64;
+            if !(first && g == 0) {
+                let free = self.free_bits[x0.trailing_zeros() as usize];
+                if u64::from(prev ^ lanes[0]) >> free != 0 {
+                    return false;
+                }
+            }
+            if x0 & self.low_mask == 0 && !self.child_digits(x0, u64::from(lanes[0])) {
+                return false;
+            }
+            // SAFETY: a 64-byte load of the group's 16 outputs.
+            let y = unsafe { _mm512_loadu_si512(lanes.as_ptr().cast()) };
+            // Lane i holds output i − 1; lane 0 the group before's last (masked by `keep`).
+            let before = _mm512_alignr_epi32::<15>(y, before_group);
+            // (before ⊕ y) ∧ keep, then ∨ (y ∧ over) by one ternary logic: 0xF8 = a ∨ (b ∧ c).
+            let nested = _mm512_and_si512(_mm512_xor_si512(before, y), keep);
+            let bad = _mm512_ternarylogic_epi32::<0xF8>(nested, y, over);
+            if _mm512_test_epi32_mask(bad, bad) != 0 {
+                return false;
+            }
+            hot = _mm512_or_si512(hot, _mm512_sllv_epi32(one, _mm512_and_si512(y, low)));
+            if (x0 + GROUP as u64) & self.low_mask == 0 {
+                if _mm512_reduce_or_epi32(hot) as u32 != c.full {
+                    return false;
+                }
+                hot = _mm512_setzero_si512();
+            }
+            if x0 & c.law_groups == 0 && !self.cells.is_empty() {
+                for i in (0..GROUP).step_by(c.law_step) {
+                    if (x0 + i as u64) & self.law_mask == 0 {
+                        self.record_law(x0 + i as u64, u64::from(lanes[i]), node);
+                    }
+                }
+            }
+            before_group = y;
+            prev = lanes[GROUP - 1];
+        }
+        self.prev = u64::from(prev);
+        self.block_hot = _mm512_reduce_or_epi32(hot) as u32;
+        true
     }
 
     /// The group loop of [`ChunkScan::scan_groups`].
