@@ -151,13 +151,7 @@ impl ChunkScan<'_> {
         let mut hot = _mm512_castsi128_si512(_mm_cvtsi32_si128(self.block_hot as i32));
         for (g, lanes) in out.chunks_exact(GROUP).enumerate() {
             let x0 = start + (g * GROUP) as u64;
-            if !(first && g == 0) {
-                let free = self.free_bits[x0.trailing_zeros() as usize];
-                if u64::from(prev ^ lanes[0]) >> free != 0 {
-                    return false;
-                }
-            }
-            if x0 & self.low_mask == 0 && !self.child_digits(x0, u64::from(lanes[0])) {
+            if !self.group_head(x0, lanes[0], prev, first && g == 0) {
                 return false;
             }
             // SAFETY: a 64-byte load of the group's 16 outputs.
@@ -177,13 +171,7 @@ impl ChunkScan<'_> {
                 }
                 hot = _mm512_setzero_si512();
             }
-            if x0 & c.law_groups == 0 && !self.cells.is_empty() {
-                for i in (0..GROUP).step_by(c.law_step) {
-                    if (x0 + i as u64) & self.law_mask == 0 {
-                        self.record_law(x0 + i as u64, u64::from(lanes[i]), node);
-                    }
-                }
-            }
+            self.group_laws(c, x0, lanes, node);
             before_group = y;
             prev = lanes[GROUP - 1];
         }
@@ -208,15 +196,7 @@ impl ChunkScan<'_> {
         for (g, y) in out.chunks_exact(GROUP).enumerate() {
             let y: &[u32; GROUP] = y.try_into().expect("whole groups");
             let x0 = start + (g * GROUP) as u64;
-            // The first lane's pair, unless it opens the chunk (its seam is checked when
-            // records are joined).
-            if !(first && g == 0) {
-                let free = self.free_bits[x0.trailing_zeros() as usize];
-                if u64::from(prev ^ y[0]) >> free != 0 {
-                    return false;
-                }
-            }
-            if x0 & self.low_mask == 0 && !self.child_digits(x0, u64::from(y[0])) {
+            if !self.group_head(x0, y[0], prev, first && g == 0) {
                 return false;
             }
             let before: [u32; GROUP];
@@ -238,16 +218,36 @@ impl ChunkScan<'_> {
                 }
                 hot = 0;
             }
-            if x0 & c.law_groups == 0 && !self.cells.is_empty() {
-                for i in (0..GROUP).step_by(c.law_step) {
-                    if (x0 + i as u64) & self.law_mask == 0 {
-                        self.record_law(x0 + i as u64, u64::from(y[i]), node);
-                    }
-                }
-            }
+            self.group_laws(c, x0, y, node);
             prev = y[GROUP - 1];
         }
         (self.prev, self.block_hot) = (u64::from(prev), hot);
         true
+    }
+
+    /// A group's first word `x0` (output `y0`): its pair with the word before (output
+    /// `prev`), unless it opens the chunk (that seam is checked when records are joined), and
+    /// at a block's first word the node digits. False when either fails.
+    #[inline(always)]
+    fn group_head(&mut self, x0: u64, y0: u32, prev: u32, opens_chunk: bool) -> bool {
+        if !opens_chunk {
+            let free = self.free_bits[x0.trailing_zeros() as usize];
+            if u64::from(prev ^ y0) >> free != 0 {
+                return false;
+            }
+        }
+        x0 & self.low_mask != 0 || self.child_digits(x0, u64::from(y0))
+    }
+
+    /// Records the node laws at the child starts among the group from `x0` (outputs `y`).
+    #[inline(always)]
+    fn group_laws(&mut self, c: &GroupLanes, x0: u64, y: &[u32], node: &mut [Vec<u8>]) {
+        if x0 & c.law_groups == 0 && !self.cells.is_empty() {
+            for i in (0..GROUP).step_by(c.law_step) {
+                if (x0 + i as u64) & self.law_mask == 0 {
+                    self.record_law(x0 + i as u64, u64::from(y[i]), node);
+                }
+            }
+        }
     }
 }
