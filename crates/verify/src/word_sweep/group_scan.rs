@@ -239,14 +239,15 @@ impl ChunkScan<'_> {
         x0 & self.low_mask != 0 || self.child_digits(x0, u64::from(y0))
     }
 
-    /// Records the node laws at the child starts among the group from `x0` (outputs `y`).
+    /// Records the node laws at the child starts among the group from `x0` (outputs `y`):
+    /// with law depths, those are the words with the law mask's bits zero, so every
+    /// `law_step`-th lane of the groups with the mask's bits above the lanes zero. (Without
+    /// them the mask has every bit, so only word 0 is visited, and it records nothing.)
     #[inline(always)]
     fn group_laws(&mut self, c: &GroupLanes, x0: u64, y: &[u32], node: &mut [Vec<u8>]) {
-        if x0 & c.law_groups == 0 && !self.cells.is_empty() {
+        if x0 & c.law_groups == 0 {
             for i in (0..GROUP).step_by(c.law_step) {
-                if (x0 + i as u64) & self.law_mask == 0 {
-                    self.record_law(x0 + i as u64, u64::from(y[i]), node);
-                }
+                self.record_law(x0 + i as u64, u64::from(y[i]), node);
             }
         }
     }

@@ -226,7 +226,7 @@ fn every_kind_of_break_at_every_lane_is_named_as_the_definition_names_it() {
             at(0, 0),
         ];
         let (bit, far) = (rng.next_u64() % u64::from(width), 1u64 << 40);
-        for (i, x0) in words.into_iter().enumerate() {
+        for x0 in words {
             let label = format!("q {q} width {width} word {x0:#x}");
             // One output bit flipped: a repeat, a non-nested pair or both.
             check(
@@ -234,13 +234,14 @@ fn every_kind_of_break_at_every_lane_is_named_as_the_definition_names_it() {
                 &p,
                 &format!("{label} bit {bit}"),
             );
-            // Outputs past the width, just past it or past 32 bits.
-            let over = if i % 2 == 0 { 1u64 << width } else { far };
-            check(
-                &|x| good(x) | if x == x0 { over } else { 0 },
-                &p,
-                &format!("{label} over {over:#x}"),
-            );
+            // Outputs past the width, just past it or past 32 bits (read as u32::MAX).
+            for over in [1u64 << width, far] {
+                check(
+                    &|x| good(x) | if x == x0 { over } else { 0 },
+                    &p,
+                    &format!("{label} over {over:#x}"),
+                );
+            }
             // Two words of one leaf node exchanged: still nested and bijective, so it passes.
             let partner = x0 ^ 1;
             check(
