@@ -17,7 +17,7 @@ to read (a shared VM varies by tens of percent between runs). The run:
 It names the machine (CPU model, cores, AVX-512, load average before and after) and the
 commit, replaces the block between the perf-report markers in docs/performance.md and in
 README.md, and writes record/DATE-performance.md with the raw figures in
-record/DATE-performance.json.
+record/DATE-performance.json (DATE-2, DATE-3, … for later runs of the same day).
 
 Usage: scripts/perf-report.py [--skip-criterion] [--skip-commands] [--dry-run]
        scripts/perf-report.py --from-json record/DATE-performance.json   (re-render only)
@@ -259,7 +259,7 @@ def block(m, ns, rows, pc, pb, date):
     kernel = ("AVX-512, so ART runs its gather kernels (the portable kernel timed beside them)"
               if m["avx512"] else "no AVX-512, so ART runs its portable kernel")
     out = [BEGIN, "",
-           f"Run of {date} on {m['cores']} cores of {m['cpu']} ({kernel}; {load}), "
+           f"Run of {date[:10]} on {m['cores']} cores of {m['cpu']} ({kernel}; {load}), "
            f"commit {m['commit']}, {m['rustc']}; regenerate with `scripts/perf-report.py`, "
            f"raw figures in [record/{date}-performance.json](../record/{date}-performance.json).",
            ""]
@@ -325,6 +325,11 @@ def main():
         rows, pc, pb = raw["commands"], raw["perf_commands"], raw["python_bench"]
     else:
         date = datetime.date.today().isoformat()
+        # A later run of the same day is recorded beside the earlier ones (DATE-2, DATE-3, …).
+        n = 2
+        day = date
+        while (ROOT / f"record/{date}-performance.json").exists():
+            date, n = f"{day}-{n}", n + 1
         m = machine()
         log(f"{m['cpu']}, {m['cores']} cores, AVX-512: {m['avx512']}, "
             f"load {m['load_before']:.2f}")

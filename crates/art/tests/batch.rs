@@ -73,14 +73,14 @@ fn every_art_kernel_equals_the_scalar_path() {
             (256, ArtMutant::StuckCodeBit),
         ] {
             let art = ArtOwen::with_mutant(variant, symbols, 11, mutant).unwrap();
-            // The narrow table exists exactly when the alphabet fits in two steps' bits (at
-            // most 16), so both gather kernels are walked here (2 and 256 symbols narrow in
-            // every base, with one or two wide steps; 1024 only where the steps are wide).
+            // The narrow table exists exactly when the alphabet fits in two steps' bits, so
+            // both gather kernels are walked here (2 and 256 symbols narrow in every base,
+            // with one or two wide steps; 1024 only where the steps are wide).
             let n = art.grammar().symbols() as usize;
             let sb = art.batch_step_bits();
             assert_eq!(
                 art.has_narrow_table(),
-                sb > 0 && (n <= 1 << sb || (2 * sb <= 16 && n <= 1 << (2 * sb))),
+                sb > 0 && n <= 1 << (2 * sb),
                 "{} table {symbols}",
                 variant.name()
             );

@@ -167,11 +167,13 @@ pub(super) fn narrow(table: &[u64], step_bits: u32, symbols: u64) -> Vec<u32> {
 
 /// The steps k whose entries the narrow kernel reads from the batch table before it turns to
 /// the narrow one: the fewest whose bits hold every symbol (the narrow entries keep the next
-/// symbol in their low k·step_bits bits), 1 or 2; `None` when two steps' bits (or the batch
-/// entries' 16) do not hold them. Two steps serve 256 symbols in bases 8, 32, 64 and 128,
-/// whose batch steps have 6, 5, 6 and 7 bits.
+/// symbol in their low k·step_bits bits), 1 or 2; `None` when two steps' bits do not hold
+/// them. (Steps have at most 8 bits, so k·step_bits ≤ 16, the batch entries' symbol field.)
+/// Two steps serve 256 symbols in bases 8, 32, 64 and 128, whose batch steps have 6, 5, 6 and
+/// 7 bits.
 pub(super) fn narrow_wide_steps(step_bits: u32, symbols: u64) -> Option<u32> {
-    (1..=2).find(|&k| k * step_bits <= 16 && symbols <= 1 << (k * step_bits))
+    debug_assert!(step_bits <= 8, "batch steps have at most 8 bits");
+    (1..=2).find(|&k| symbols <= 1 << (k * step_bits))
 }
 
 /// Walks [`LANES`] words (W ≤ 32 bits) through `steps` whole steps of the batch `table`:

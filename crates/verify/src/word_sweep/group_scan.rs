@@ -25,13 +25,14 @@ pub(super) fn applies(plan: &SweepPlan) -> bool {
     plan.base().q() > 1 && matches!(block_low_bits(plan), 4 | 5)
 }
 
-/// Which compilation of the group loop runs: the same code, for the baseline target or with
-/// AVX-512 enabled.
+/// Which code runs the group loop; both give the same verdicts (tested).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) enum GroupKernel {
-    /// Any CPU.
+    /// Plain Rust over arrays of sixteen lanes, as the compiler vectorizes it for the target
+    /// (any CPU).
     Portable,
-    /// CPUs with AVX-512F, VL and BW (checked when chosen).
+    /// AVX-512 intrinsics, for CPUs with AVX-512F, VL and BW: construct it only through
+    /// [`GroupKernel::detect`], whose check the kernel's safety rests on.
     Avx512,
 }
 
