@@ -272,8 +272,8 @@ def block(m, ns, rows, pc, pb, date):
         if consecutive:
             out += ["The batch path on consecutive words, ns per coordinate (a group of lanes "
                     "walks the steps its words share once; `art-owen-8p`, whose 6-bit steps "
-                    "cannot hold its 256 symbols in a 32-bit entry, always runs the 64-bit "
-                    "gather kernel):", ""]
+                    "cannot hold its 256 symbols in one step's bits, reads its first two steps "
+                    "from the 64-bit table in the narrow kernel):", ""]
             out += consecutive + [""]
     if rows:
         out += ["Whole commands, one run each under `/usr/bin/time`:", ""] + command_table(rows)
@@ -291,12 +291,14 @@ def readme_line(m, rows, date):
         return None
     r = {k: v["seconds"] for k, v in rows.items()}
     art = r["exhaustive art-owen-2"] / r["exhaustive lk-hash"]
-    return (f"{BEGIN}\nLast measured {date} on {m['cores']} cores of {m['cpu']}"
+    others = ", ".join(f"{r[f'exhaustive {n}'] / r['exhaustive lk-hash']:.2f}× for `{n}`"
+                       for n in EXHAUSTIVE[2:] if f"exhaustive {n}" in r)
+    return (f"{BEGIN}\nLast measured {date[:10]} on {m['cores']} cores of {m['cpu']}"
             f"{' with AVX-512' if m['avx512'] else ''}: the gate (`verify --level quick`) "
             f"{r['verify quick']:.1f} s, the main job {r['main job']:.1f} s after the build, "
             f"`report --quick` {r['report quick']:.1f} s, every 32-bit word of one dimension "
             f"{r['exhaustive lk-hash']:.1f} s for `lk-hash` and {art:.2f}× that for "
-            f"`art-owen-2`; the rest in [docs/performance.md](docs/performance.md).\n{END}")
+            f"`art-owen-2`{f' ({others})' if others else ''}; the rest in [docs/performance.md](docs/performance.md).\n{END}")
 
 
 def replace_block(path, text):
