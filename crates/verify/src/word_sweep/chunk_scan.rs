@@ -70,6 +70,7 @@ pub(super) struct ChunkScan<'a> {
     width: u32,
     q: u32,
     chunk_digits: u32,
+    /// By trailing zeros of x: the low bits in which f(x − 1) and f(x) may differ.
     pub(super) free_bits: [u8; 65],
     /// By trailing zeros of x: the shallowest depth k ≥ d whose child x starts (its low
     /// W − q(k + 1) bits are zero).
@@ -78,6 +79,7 @@ pub(super) struct ChunkScan<'a> {
     /// so has every child start of depths d..d′ − 1; inside a chunk no other word does (when
     /// d′ = d the block is the chunk, whose first word the caller handles).
     pub(super) low_mask: u64,
+    /// Child starts of the law depths have these bits zero (every bit when there are none).
     pub(super) law_mask: u64,
     /// Per depth d..d′, the output digits the current node's children have taken.
     taken: Vec<[u64; 4]>,

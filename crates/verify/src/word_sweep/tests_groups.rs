@@ -285,3 +285,35 @@ fn a_merge_at_every_depth_below_the_chunks_is_named_as_the_definition_names_it()
         }
     }
 }
+
+#[test]
+fn a_break_at_a_frame_seam_inside_a_chunk_is_named() {
+    // Base 128 at 32 bits: chunks of 2^25 words span 32 frames. The words of chunk 0 from
+    // 2^20 on have digit 0 of their outputs changed, consistently, so the only pair that shows
+    // it is the one across the seam of frames 0 and 1: (2^20 − 1, 2^20).
+    let p = plan(7, 32);
+    assert!(group_scan::applies(&p) && p.chunk_words() > 1 << 20);
+    let seam = 1u64 << 20;
+    let f = move |x: u64| {
+        let y = x ^ 0x5a5a_5a5a;
+        if (seam..p.chunk_words()).contains(&x) {
+            y ^ 1 << 25
+        } else {
+            y
+        }
+    };
+    let s = Mapped {
+        f: move |x, _| f(x),
+        base: p.base(),
+        widths: vec![32],
+    };
+    for kernel in kernels() {
+        let piece = sweep_with(&s, &p, 0, 0..p.chunks(), &|_| {}, kernel).unwrap();
+        assert_eq!(
+            piece.failure,
+            p.step_failure(seam, f(seam - 1), f(seam)),
+            "{kernel:?}"
+        );
+        assert!(piece.failure.is_some());
+    }
+}
