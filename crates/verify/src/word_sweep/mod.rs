@@ -346,3 +346,5 @@ mod tests;
 mod tests_collisions;
 #[cfg(test)]
 mod tests_groups;
+#[cfg(test)]
+mod tests_laws;
