@@ -253,8 +253,7 @@ pub(super) unsafe fn walk_avx512_narrow<const SB: u32, T: Word>(
     let next_mask = _mm512_set1_epi32(((1u32 << (wide * SB)) - 1) as i32);
     let sb = count(SB);
     let top = count(32 - SB);
-    // Steps 0..wide read the wide table: full contribution and next symbol (step 0 from the
-    // root's row, where every lane's symbol is the root).
+    // Steps 0..wide read the wide table: full contribution and next symbol.
     let join = |l: __m256i, h: __m256i| _mm512_inserti64x4::<1>(_mm512_castsi256_si512(l), h);
     for i in 0..wide.min(steps) {
         let shift = count(SB * i);
@@ -262,11 +261,8 @@ pub(super) unsafe fn walk_avx512_narrow<const SB: u32, T: Word>(
             if i < shared[g] {
                 continue;
             }
-            let row = if i == 0 {
-                _mm512_set1_epi32((root << SB) as i32)
-            } else {
-                _mm512_sll_epi32(s[g], sb)
-            };
+            // At step 0 every lane's symbol is the root (no step shared).
+            let row = _mm512_sll_epi32(s[g], sb);
             let idx = _mm512_or_si512(row, _mm512_srl_epi32(bits[g], top));
             bits[g] = _mm512_sll_epi32(bits[g], sb);
             // SAFETY: every lane's symbol < symbols and its digits < 2^SB (the table

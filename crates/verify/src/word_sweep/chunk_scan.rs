@@ -236,13 +236,7 @@ impl<'a> ChunkScan<'a> {
         bitmap: &mut [u64],
     ) -> Result<(), (u64, SweepFailure)> {
         if !self.child_digits(x, y) {
-            return Err((
-                x,
-                SweepFailure::Collision {
-                    inputs: [0, x],
-                    output: y,
-                },
-            ));
+            return Err(unpartnered_collision(x, y));
         }
         match bitmap {
             [only] => *only = 0,
@@ -311,14 +305,20 @@ fn mark(
         *bits = bitmap[at];
     }
     if *bits & bit != 0 {
-        return Err((
-            x,
-            SweepFailure::Collision {
-                inputs: [0, x],
-                output: y,
-            },
-        ));
+        return Err(unpartnered_collision(x, y));
     }
     *bits |= bit;
     Ok(())
+}
+
+/// A collision at input `x` (output `y`) whose earlier partner the caller finds by a rescan
+/// (input 0 stands for it until then).
+fn unpartnered_collision(x: u64, y: u64) -> (u64, SweepFailure) {
+    (
+        x,
+        SweepFailure::Collision {
+            inputs: [0, x],
+            output: y,
+        },
+    )
 }
