@@ -179,6 +179,30 @@ def consecutive_table(ns):
     return lines
 
 
+def floor_table(ns):
+    """The lookup floor group: four independent table reads per word, and each ART kernel's
+    time on random words as a multiple of the floor of the reads it makes."""
+    group = "scramble_lookup_floor/"
+    rows = [(k[len(group):], v) for k, v in ns.items() if k.startswith(group)]
+    if not rows:
+        return []
+    lines = ["| four independent lookups per word (no lookup waits on another) | ns per word |",
+             "|---|---|"]
+    lines += [f"| {name} | {fmt_ns(v)} |" for name, v in rows]
+    pairs = [("art-owen-2", "16-lane gathers, 256 KiB table", "the narrow gather kernel"),
+             ("art-owen-2 (Portable kernel)", "scalar loads, 512 KiB table",
+              "the portable kernel")]
+    # With AVX-512 the unnamed `art-owen-2` row is the narrow gather kernel (the 64-bit one is
+    # timed beside it); without, it is the portable kernel and the first pair is skipped.
+    avx512 = "scramble_batch_u32/art-owen-2 (Avx512 kernel)" in ns
+    for kernel_row, floor_row, label in pairs[0 if avx512 else 1:]:
+        k, f = ns.get(f"scramble_batch_u32/{kernel_row}"), ns.get(group + floor_row)
+        if k and f:
+            lines.append(f"| `art-owen-2` random words, {label} ({floor_row}: {k / f:.2f}× "
+                         f"the floor) | {fmt_ns(k)} |")
+    return lines
+
+
 def command_table(rows):
     ref = rows["exhaustive lk-hash"]["seconds"]
     lines = ["| command (release build, 2 threads unless set) | seconds | peak MB | ratio |",
@@ -275,6 +299,14 @@ def block(m, ns, rows, pc, pb, date):
                     "cannot hold its 256 symbols in one step's bits, reads its first two steps "
                     "from the 64-bit table in the narrow kernel):", ""]
             out += consecutive + [""]
+        floor = floor_table(ns)
+        if floor:
+            out += ["What the table reads alone cost (`scramble_lookup_floor`): a 32-bit word "
+                    "takes four lookups in 8-bit steps; here they are independent reads from "
+                    "tables of the sizes the kernels walk for 256 symbols (the narrow table "
+                    "256 KiB, the 64-bit one 512 KiB) and from one that fits the first-level "
+                    "cache, so no kernel that reads those tables can beat these rows:", ""]
+            out += floor + [""]
     if rows:
         out += ["Whole commands, one run each under `/usr/bin/time`:", ""] + command_table(rows)
         out += [""]

@@ -182,5 +182,73 @@ fn scramblers(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, scramblers);
+/// What the batch kernels' table reads cost on their own: the four lookups a 32-bit word takes
+/// in 8-bit steps, made independent (each index read from memory, none waiting on an entry),
+/// so the figure is the throughput floor a four-lookup kernel cannot go below on this core.
+/// Tables: one that fits the first-level cache, and the sizes the kernels walk for 256
+/// symbols (the narrow table, 256 KiB; the 64-bit table the portable kernel reads, 512 KiB).
+/// Throughput is in words of four lookups, comparable with `scramble_batch_u32`.
+fn lookup_floor(c: &mut Criterion) {
+    const LOOKUPS: usize = 4;
+    let mut rng = SplitMix64::new(5);
+    let raw: Vec<u32> = (0..LOOKUPS * WORDS).map(|_| rng.next_u32()).collect();
+    let mut group = c.benchmark_group("scramble_lookup_floor");
+    group.throughput(Throughput::Elements(WORDS as u64));
+    for kib in [16usize, 256, 512] {
+        let entries = kib * 1024 / 8;
+        let table: Vec<u64> = (0..entries).map(|_| rng.next_u64()).collect();
+        let idx: Vec<u32> = raw.iter().map(|&r| r % entries as u32).collect();
+        group.bench_function(format!("scalar loads, {kib} KiB table"), |b| {
+            b.iter(|| {
+                let mut acc = [0u64; LOOKUPS];
+                for chunk in black_box(&idx).chunks_exact(LOOKUPS) {
+                    for (a, &i) in acc.iter_mut().zip(chunk) {
+                        *a ^= table[i as usize];
+                    }
+                }
+                black_box(acc)
+            })
+        });
+    }
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx512f") {
+        for kib in [16usize, 256] {
+            let entries = kib * 1024 / 4;
+            let table: Vec<u32> = (0..entries).map(|_| rng.next_u32()).collect();
+            let idx: Vec<u32> = raw.iter().map(|&r| r % entries as u32).collect();
+            group.bench_function(format!("16-lane gathers, {kib} KiB table"), |b| {
+                // SAFETY: AVX-512F was detected, and every index is below the table's length.
+                b.iter(|| black_box(unsafe { gather_xor(black_box(&table), black_box(&idx)) }))
+            });
+        }
+    }
+    group.finish();
+}
+
+/// The XOR of `table[i]` over `idx`, sixteen lanes per gather, four gathers in flight.
+///
+/// # Safety
+/// The CPU must support AVX-512F, and every index must be below `table.len()`.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f")]
+unsafe fn gather_xor(table: &[u32], idx: &[u32]) -> u32 {
+    use std::arch::x86_64::*;
+    let mut acc = [_mm512_setzero_si512(); 4];
+    for (k, chunk) in idx.chunks_exact(16).enumerate() {
+        // SAFETY: one unaligned load of the 16 indices of `chunk`; the gather reads inside
+        // `table` by the caller's contract.
+        let e = unsafe {
+            let i = _mm512_loadu_si512(chunk.as_ptr().cast());
+            _mm512_i32gather_epi32::<4>(i, table.as_ptr().cast())
+        };
+        acc[k % 4] = _mm512_xor_si512(acc[k % 4], e);
+    }
+    let all = _mm512_xor_si512(
+        _mm512_xor_si512(acc[0], acc[1]),
+        _mm512_xor_si512(acc[2], acc[3]),
+    );
+    _mm512_reduce_or_epi32(all) as u32
+}
+
+criterion_group!(benches, scramblers, lookup_floor);
 criterion_main!(benches);
