@@ -188,18 +188,18 @@ pub(super) fn walk_portable<const SB: u32>(
     root: u32,
     memo: &mut PrefixMemo,
 ) -> ([u64; LANES], [usize; LANES]) {
-    // Words left-aligned: each step reads the top SB bits, then shifts them out.
+    // Words left-aligned: step i reads bits SB·i.. SB·(i + 1) from the top.
     let bits = x.map(|v| v << (64 - w));
     let diff = bits.iter().fold(0, |o, &b| o | (b ^ bits[0]));
     let start = memo.start::<SB>(table, bits[0], diff, steps, root);
     let mut lanes = PortableLanes {
-        bits: bits.map(|b| b << (SB * start.steps)),
+        bits,
         s: [start.symbol as usize; LANES],
         acc: [start.acc; LANES],
     };
     if start.steps == 0 && steps == 32 / SB {
         // Constant bounds for the most common walk (32-bit words, nothing shared) unroll the
-        // steps into immediate shifts: a tenth of the portable kernel's time.
+        // steps into immediate shifts.
         lanes.walk::<SB>(table, 0, 32 / SB);
     } else {
         lanes.walk::<SB>(table, start.steps, steps);
@@ -207,7 +207,9 @@ pub(super) fn walk_portable<const SB: u32>(
     (lanes.acc, lanes.s)
 }
 
-/// The portable kernel's lanes: input bits still to read (top-aligned), symbol, accumulator.
+/// The portable kernel's lanes: the words' bits (top-aligned, never written, so they need no
+/// register of their own: eight lanes' symbols and accumulators already take more than the
+/// free ones), symbol, accumulator.
 struct PortableLanes {
     bits: [u64; LANES],
     s: [usize; LANES],
@@ -215,14 +217,15 @@ struct PortableLanes {
 }
 
 impl PortableLanes {
-    /// Steps `from..to` of the walk, every lane advanced one step before the next step.
+    /// Steps `from..to` of the walk (numbered from the root), every lane advanced one step
+    /// before the next step.
     #[inline(always)]
     fn walk<const SB: u32>(&mut self, table: &[u64], from: u32, to: u32) {
         for i in from..to {
             let shift = SB * i;
+            let read = 64 - SB * (i + 1);
             for l in 0..LANES {
-                let v = (self.bits[l] >> (64 - SB)) as usize;
-                self.bits[l] <<= SB;
+                let v = ((self.bits[l] >> read) & ((1 << SB) - 1)) as usize;
                 let e = table[(self.s[l] << SB) | v];
                 self.acc[l] ^= e >> shift;
                 self.s[l] = (e & 0xFFFF) as usize;
