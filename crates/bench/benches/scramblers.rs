@@ -187,42 +187,65 @@ fn scramblers(c: &mut Criterion) {
 /// so the figure is the throughput floor a four-lookup kernel cannot go below on this core.
 /// Tables: one that fits the first-level cache, and the sizes the kernels walk for 256
 /// symbols (the narrow table, 256 KiB; the 64-bit table the portable kernel reads, 512 KiB).
-/// Throughput is in words of four lookups, comparable with `scramble_batch_u32`.
+/// The rows with three lookups are what 11-bit steps would read (2048 entries per symbol:
+/// 2 MiB narrow, 4 MiB of 64-bit entries), the row with two what 16-bit steps would (64 MiB
+/// narrow). Throughput is in words, comparable with `scramble_batch_u32`.
 fn lookup_floor(c: &mut Criterion) {
-    const LOOKUPS: usize = 4;
     let mut rng = SplitMix64::new(5);
-    let raw: Vec<u32> = (0..LOOKUPS * WORDS).map(|_| rng.next_u32()).collect();
+    let raw: Vec<u32> = (0..4 * WORDS).map(|_| rng.next_u32()).collect();
+    // Indices into `entries` entries, `lookups` per word.
+    let indices = |lookups: usize, entries: usize| -> Vec<u32> {
+        raw[..lookups * WORDS]
+            .iter()
+            .map(|&r| r % entries as u32)
+            .collect()
+    };
+    let label = |lookups: usize, what: &str, kib: usize| match lookups {
+        4 => format!("{what}, {kib} KiB table"),
+        3 => format!("three {what}, {kib} KiB table (11-bit steps)"),
+        _ => format!("two {what}, {kib} KiB table (16-bit steps)"),
+    };
     let mut group = c.benchmark_group("scramble_lookup_floor");
     group.throughput(Throughput::Elements(WORDS as u64));
-    for kib in [16usize, 256, 512] {
+    for (lookups, kib) in [(4usize, 16usize), (4, 256), (4, 512), (3, 4096)] {
         let entries = kib * 1024 / 8;
         let table: Vec<u64> = (0..entries).map(|_| rng.next_u64()).collect();
-        let idx: Vec<u32> = raw.iter().map(|&r| r % entries as u32).collect();
-        group.bench_function(format!("scalar loads, {kib} KiB table"), |b| {
+        let idx = indices(lookups, entries);
+        group.bench_function(label(lookups, "scalar loads", kib), |b| {
             b.iter(|| {
-                let mut acc = [0u64; LOOKUPS];
-                for chunk in black_box(&idx).chunks_exact(LOOKUPS) {
-                    for (a, &i) in acc.iter_mut().zip(chunk) {
-                        *a ^= table[i as usize];
-                    }
-                }
-                black_box(acc)
+                let idx = black_box(&idx);
+                black_box(match lookups {
+                    4 => scalar_xor::<4>(&table, idx),
+                    _ => scalar_xor::<3>(&table, idx),
+                })
             })
         });
     }
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("avx512f") {
-        for kib in [16usize, 256] {
+        for (lookups, kib) in [(4usize, 16usize), (4, 256), (3, 2048), (2, 65536)] {
             let entries = kib * 1024 / 4;
             let table: Vec<u32> = (0..entries).map(|_| rng.next_u32()).collect();
-            let idx: Vec<u32> = raw.iter().map(|&r| r % entries as u32).collect();
-            group.bench_function(format!("16-lane gathers, {kib} KiB table"), |b| {
+            let idx = indices(lookups, entries);
+            group.bench_function(label(lookups, "16-lane gathers", kib), |b| {
                 // SAFETY: AVX-512F was detected, and every index is below the table's length.
                 b.iter(|| black_box(unsafe { gather_xor(black_box(&table), black_box(&idx)) }))
             });
         }
     }
     group.finish();
+}
+
+/// The XOR of `table[i]` over `idx`, read N at a time (one word's lookups) into N
+/// accumulators.
+fn scalar_xor<const N: usize>(table: &[u64], idx: &[u32]) -> u64 {
+    let mut acc = [0u64; N];
+    for chunk in idx.chunks_exact(N) {
+        for (a, &i) in acc.iter_mut().zip(chunk) {
+            *a ^= table[i as usize];
+        }
+    }
+    acc.iter().fold(0, |x, &a| x ^ a)
 }
 
 /// The XOR of `table[i]` over `idx`, sixteen lanes per gather, four gathers in flight.
