@@ -186,7 +186,7 @@ def floor_table(ns):
     rows = [(k[len(group):], v) for k, v in ns.items() if k.startswith(group)]
     if not rows:
         return []
-    lines = ["| four independent lookups per word (no lookup waits on another) | ns per word |",
+    lines = ["| independent lookups per word (none waits on another) | ns per word |",
              "|---|---|"]
     lines += [f"| {name} | {fmt_ns(v)} |" for name, v in rows]
     pairs = [("art-owen-2", "16-lane gathers, 256 KiB table", "the narrow gather kernel"),
@@ -305,7 +305,10 @@ def block(m, ns, rows, pc, pb, date):
                     "takes four lookups in 8-bit steps; here they are independent reads from "
                     "tables of the sizes the kernels walk for 256 symbols (the narrow table "
                     "256 KiB, the 64-bit one 512 KiB) and from one that fits the first-level "
-                    "cache, so no kernel that reads those tables can beat these rows:", ""]
+                    "cache, so no kernel that reads those tables can beat these rows; the rows "
+                    "with three or two lookups are what 11- or 16-bit steps would read from "
+                    "their tables. The last rows state each ART kernel on random words as a "
+                    "multiple of the floor of the reads it makes:", ""]
             out += floor + [""]
     if rows:
         out += ["Whole commands, one run each under `/usr/bin/time`:", ""] + command_table(rows)
