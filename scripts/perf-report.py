@@ -305,7 +305,8 @@ def block(m, ns, rows, pc, pb, date):
                     "takes four lookups in 8-bit steps; here they are independent reads from "
                     "tables of the sizes the kernels walk for 256 symbols (the narrow table "
                     "256 KiB, the 64-bit one 512 KiB) and from one that fits the first-level "
-                    "cache, so no kernel that reads those tables can beat these rows; the rows "
+                    "cache, so no kernel whose reads of those tables land at random (random words) "
+                    "can beat these rows; the rows "
                     "with three or two lookups are what 11- or 16-bit steps would read from "
                     "their tables. The last rows state each ART kernel on random words as a "
                     "multiple of the floor of the reads it makes:", ""]
