@@ -210,7 +210,7 @@ fn table_bytes_count_every_table() {
             let expected = art.grammar().table_bytes()
                 + n * 8
                 + psi_bytes
-                + (n << 4) * (4 + 2 + 8)
+                + (n << 4) * (4 + 8)
                 + (n << batch_bits) * 8
                 + narrow_bytes;
             assert_eq!(art.table_bytes(), expected, "{name} with {symbols} symbols");

@@ -127,6 +127,25 @@ fn scramblers(c: &mut Criterion) {
     }
     group.finish();
 
+    // 64-bit words (the batch path for W > 32: ART's split tables, 64-bit carries), random.
+    let words64: Vec<u64> = (0..WORDS).map(|_| rng.next_u64()).collect();
+    let mut group = c.benchmark_group("scramble_batch_u64");
+    group.throughput(Throughput::Elements(WORDS as u64));
+    let mut buffer64 = words64.clone();
+    for (request, s) in built
+        .iter()
+        .filter(|(r, _)| ["lk-hash", "art-owen-2", "art-owen-16p"].contains(&r.as_str()))
+    {
+        group.bench_function(BenchmarkId::from_parameter(request), |b| {
+            b.iter(|| {
+                buffer64.copy_from_slice(&words64);
+                s.scramble_batch(&mut buffer64, Width::W64, 3);
+                black_box(buffer64[WORDS - 1])
+            })
+        });
+    }
+    group.finish();
+
     // Consecutive words (what the every-word sweep and index scrambling feed the batch path):
     // ART's groups share their leading steps and read the last one from one cache line. Every
     // kernel the CPU runs, so the portable kernel's figure for the sweep is here too.

@@ -7,7 +7,7 @@
 //! words of at most 32 bits use a table of wider steps (up to 8 bits) whose entries hold
 //! everything a step contributes to the output in one word.
 //!
-//! **The contribution form.** In the scalar loop (`forward_fast`) a step with table entry
+//! **The contribution form.** In the scalar loop (`forward_fast`) a step with entry
 //! (local, carry, next) outputs `local ⊕ top(G)` and passes `G' = (G ⊕ carry) << SB` on, where
 //! `G` holds the translations pending from earlier steps in the step's relative frame and the
 //! carry's own top SB bits are already in `local`. Unrolled, the output word (top-aligned) is
@@ -23,8 +23,8 @@
 //! pending translations for the digits left over are the accumulator shifted up by the bits
 //! consumed (its top 32 bits, which are exact), and the scalar code finishes the word.
 //!
-//! Words wider than 32 bits walk the scalar path's split tables (64-bit carries), interleaved
-//! the same way. Both are bit-identical to the scalar path (tested on every registry entry).
+//! Words wider than 32 bits walk the scalar path's tables of whole 64-bit contributions,
+//! interleaved the same way. Both are bit-identical to the scalar path (tested on every registry entry).
 
 use super::lanes::{PrefixMemo, Word};
 use super::{ArtOwen, Step, LANES};
@@ -278,7 +278,7 @@ impl ArtOwen {
     }
 
     /// Bits per step of the batch path's table for words of at most 32 bits (0 when the
-    /// alphabet is too large for it and the split tables serve every width).
+    /// alphabet is too large for it and the scalar step tables serve every width).
     pub fn batch_step_bits(&self) -> u32 {
         self.q() * self.batch_digits
     }
@@ -370,7 +370,7 @@ impl ArtOwen {
         }
     }
 
-    /// [`LANES`] words at a time through the batch tables `t` (PACKED) or the split tables.
+    /// [`LANES`] words at a time through the batch tables `t` (PACKED) or the scalar step tables.
     fn batch_lanes<const SB: u32, const PACKED: bool, T: Word>(
         &self,
         t: &BatchTables,
@@ -520,7 +520,9 @@ impl ArtOwen {
         })
     }
 
-    /// [`LANES`] words of any width through the scalar path's split tables (64-bit carries).
+    /// [`LANES`] words of any width through the scalar path's step tables (whole 64-bit
+    /// contributions), in the contribution form of the module docs: the accumulator's top
+    /// `consumed` bits are the output, and the rest, moved up, the pending translations.
     #[inline(always)]
     fn lanes_wide<const SB: u32>(
         &self,
@@ -529,27 +531,32 @@ impl ArtOwen {
         steps: u32,
         root: u32,
     ) -> [u64; LANES] {
-        let mut bits = x.map(|v| v << (64 - w));
+        // Top-aligned words whose digits each step reads in place (see `PortableLanes`).
+        let bits = x.map(|v| v << (64 - w));
+        let (contribution, next) = (&self.step_contribution[..], &self.step_next[..]);
         let mut s = [root; LANES];
-        let mut g = [0u64; LANES];
-        let mut out = [0u64; LANES];
-        for _ in 0..steps {
+        let mut acc = [0u64; LANES];
+        for i in 0..steps {
+            let (read, shift) = (64 - SB * (i + 1), SB * i);
             for l in 0..LANES {
-                let v = (bits[l] >> (64 - SB)) as usize;
-                bits[l] <<= SB;
+                let v = ((bits[l] >> read) & ((1 << SB) - 1)) as usize;
                 let idx = ((s[l] as usize) << SB) | v;
-                out[l] = (out[l] << SB) | ((self.step_local[idx] as u64) ^ (g[l] >> (64 - SB)));
-                g[l] = (g[l] ^ self.step_carry[idx]) << SB;
-                s[l] = self.step_next[idx];
+                acc[l] ^= contribution[idx] >> shift;
+                s[l] = next[idx];
             }
         }
         let consumed = steps * SB;
         let width = Width::new(w).expect("a valid width");
         std::array::from_fn(|l| {
-            if consumed == w {
-                out[l]
+            let out = if consumed == 0 {
+                0
             } else {
-                self.finish_digits(x[l], width, consumed, s[l], g[l], out[l])
+                acc[l] >> (64 - consumed)
+            };
+            if consumed == w {
+                out
+            } else {
+                self.finish_digits(x[l], width, consumed, s[l], acc[l] << consumed, out)
             }
         })
     }

@@ -63,6 +63,17 @@ struct Step {
     local: u32,
 }
 
+impl Step {
+    /// The step's whole contribution in one word: `E = (local << (64 − SB)) | (carry's low
+    /// 64 − SB bits)` for steps of `step_bits` bits. With the pending translations G of the
+    /// earlier steps, the step outputs `top_SB(G ⊕ E)` (= local ⊕ top_SB(G)) and passes
+    /// `(G ⊕ E) << SB` on: the carry's own top SB bits, which E replaces by `local`, are
+    /// shifted out there (and are already in `local`).
+    fn contribution(&self, step_bits: u32) -> u64 {
+        ((self.local as u64) << (64 - step_bits)) | (self.carry & (u64::MAX >> step_bits))
+    }
+}
+
 /// Number of dimensions whose root symbol and shifts are precomputed.
 const CACHED_ROOTS: u32 = 256;
 
@@ -130,8 +141,8 @@ pub struct ArtOwen {
     /// Step table, split by field so the serial symbol chain reads only the compact `next`
     /// array: index s·2^(q·step_digits) + v.
     step_next: Vec<u32>,
-    step_local: Vec<u16>,
-    step_carry: Vec<u64>,
+    /// Each step's [`Step::contribution`], at the same index.
+    step_contribution: Vec<u64>,
     /// Digits per step of the batch path's table (up to 8 bits per step while the table stays
     /// within [`batch::BATCH_TABLE_BYTES`]); 0 when the alphabet has more than 2^16 symbols
     /// and there is no batch table.
@@ -185,8 +196,7 @@ impl ArtOwen {
             psi_inv,
             step_digits: (4 / variant.q()).max(1),
             step_next: Vec::new(),
-            step_local: Vec::new(),
-            step_carry: Vec::new(),
+            step_contribution: Vec::new(),
             batch_digits: 0,
             batch: std::sync::OnceLock::new(),
             batch_words: batch::WordsSeen::default(),
@@ -199,9 +209,9 @@ impl ArtOwen {
             art.build_single_digit_steps();
         } else {
             let steps = art.build_steps(art.step_digits);
+            let step_bits = art.step_digits * variant.q();
             art.step_next = steps.iter().map(|e| e.next).collect();
-            art.step_local = steps.iter().map(|e| e.local as u16).collect();
-            art.step_carry = steps.iter().map(|e| e.carry).collect();
+            art.step_contribution = steps.iter().map(|e| e.contribution(step_bits)).collect();
         }
         if art.grammar.symbols() <= 1 << 16 {
             art.batch_digits = batch::batch_digits(variant.q(), art.grammar.symbols());
@@ -242,21 +252,21 @@ impl ArtOwen {
     fn build_single_digit_steps(&mut self) {
         let q = self.q();
         let n = (self.grammar.symbols() as usize) << q;
-        let (mut next, mut local, mut carry) = (
-            Vec::with_capacity(n),
-            Vec::with_capacity(n),
-            Vec::with_capacity(n),
-        );
+        let (mut next, mut contribution) = (Vec::with_capacity(n), Vec::with_capacity(n));
         for s in 0..self.grammar.symbols() {
             let code = self.codes[s as usize];
             let top = (code >> (64 - q)) as u32;
             for d in 0..1u32 << q {
                 next.push(self.child(s, d));
-                local.push((self.psi_apply(s, d) ^ top) as u16);
-                carry.push(code);
+                let step = Step {
+                    carry: code,
+                    next: 0,
+                    local: self.psi_apply(s, d) ^ top,
+                };
+                contribution.push(step.contribution(q));
             }
         }
-        (self.step_next, self.step_local, self.step_carry) = (next, local, carry);
+        (self.step_next, self.step_contribution) = (next, contribution);
     }
 
     /// The variant.
@@ -346,8 +356,9 @@ impl ArtOwen {
         for i in 0..steps {
             let v = (x >> (w - step_bits * (i + 1))) & mask;
             let idx = ((s as usize) << step_bits) | v as usize;
-            out = (out << step_bits) | ((self.step_local[idx] as u64) ^ (g >> (64 - step_bits)));
-            g = (g ^ self.step_carry[idx]) << step_bits;
+            let t = g ^ self.step_contribution[idx];
+            out = (out << step_bits) | (t >> (64 - step_bits));
+            g = t << step_bits;
             s = self.step_next[idx];
         }
         self.finish_digits(x, width, steps * step_bits, s, g, out)
@@ -536,8 +547,7 @@ impl Scrambler for ArtOwen {
             + self.psi.len()
             + self.psi_inv.len()
             + self.step_next.len() * 4
-            + self.step_local.len() * 2
-            + self.step_carry.len() * 8
+            + self.step_contribution.len() * 8
             + self.batch_tables().map_or(0, batch::BatchTables::bytes)
     }
 
