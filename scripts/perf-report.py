@@ -179,6 +179,20 @@ def consecutive_table(ns):
     return lines
 
 
+def wide_table(ns):
+    group = "scramble_batch_u64/"
+    rows = [(k[len(group):], v) for k, v in ns.items() if k.startswith(group)]
+    ref = ns.get(group + "lk-hash")
+    if not rows:
+        return []
+    lines = ["| scrambler, random 64-bit words (the batch path for W > 32) | batch ns "
+             "| / `lk-hash` |", "|---|---|---|"]
+    for name, v in rows:
+        ratio = f"{v / ref:.2f}" if ref else "–"
+        lines.append(f"| `{name}` | {fmt_ns(v)} | {ratio} |")
+    return lines
+
+
 def floor_table(ns):
     """The lookup floor group: four independent table reads per word, and each ART kernel's
     time on random words as a multiple of the floor of the reads it makes."""
@@ -299,6 +313,10 @@ def block(m, ns, rows, pc, pb, date):
                     "cannot hold its 256 symbols in one step's bits, reads its first two steps "
                     "from the 64-bit table in the narrow kernel):", ""]
             out += consecutive + [""]
+        wide = wide_table(ns)
+        if wide:
+            out += ["64-bit words, ns per coordinate (ART walks its scalar step tables there, "
+                    "eight lanes at a time):", ""] + wide + [""]
         floor = floor_table(ns)
         if floor:
             out += ["What the table reads alone cost (`scramble_lookup_floor`): a 32-bit word "
