@@ -7,10 +7,11 @@
 //! words of at most 32 bits use a table of wider steps (up to 8 bits) whose entries hold
 //! everything a step contributes to the output in one word.
 //!
-//! **The contribution form.** In the scalar loop (`forward_fast`) a step with entry
-//! (local, carry, next) outputs `local ⊕ top(G)` and passes `G' = (G ⊕ carry) << SB` on, where
-//! `G` holds the translations pending from earlier steps in the step's relative frame and the
-//! carry's own top SB bits are already in `local`. Unrolled, the output word (top-aligned) is
+//! **The contribution form.** A step with entry (local, carry, next) outputs
+//! `local ⊕ top(G)` and passes `G' = (G ⊕ carry) << SB` on, where `G` holds the translations
+//! pending from earlier steps in the step's relative frame and the carry's own top SB bits are
+//! already in `local` (the scalar loop, `forward_fast`, reads both from one word, E_i below).
+//! Unrolled, the output word (top-aligned) is
 //!
 //! ```text
 //! Y = ⊕_i  E_i >> (SB·i),     E_i = (local_i << (64 − SB)) | (carry_i & (2^(64−SB) − 1)),
@@ -23,8 +24,9 @@
 //! pending translations for the digits left over are the accumulator shifted up by the bits
 //! consumed (its top 32 bits, which are exact), and the scalar code finishes the word.
 //!
-//! Words wider than 32 bits walk the scalar path's tables of whole 64-bit contributions,
-//! interleaved the same way. Both are bit-identical to the scalar path (tested on every registry entry).
+//! Words wider than 32 bits walk the scalar path's table of whole 64-bit contributions E_i,
+//! interleaved the same way. Both are bit-identical to the scalar path (tested on every
+//! registry entry).
 
 use super::lanes::{PrefixMemo, Word};
 use super::{ArtOwen, Step, LANES};
@@ -137,11 +139,7 @@ pub(super) fn batch_digits(q: u32, symbols: u32) -> u32 {
 pub(super) fn pack(steps: &[Step], step_bits: u32) -> Vec<u64> {
     steps
         .iter()
-        .map(|e| {
-            let contribution =
-                ((e.local as u64) << (64 - step_bits)) | (e.carry & (u64::MAX >> step_bits));
-            (contribution & 0xFFFF_FFFF_0000_0000) | e.next as u64
-        })
+        .map(|e| (e.contribution(step_bits) & 0xFFFF_FFFF_0000_0000) | e.next as u64)
         .collect()
 }
 
@@ -499,8 +497,8 @@ impl ArtOwen {
                 } else {
                     acc[l] >> (64 - consumed)
                 };
-                let g = ((acc[l] & 0xFFFF_FFFF_0000_0000) << consumed) ^ self.codes[s[l]];
-                (out << r) | ((x[l] & ((1 << r) - 1)) ^ (g >> (64 - r)))
+                let g = (acc[l] & 0xFFFF_FFFF_0000_0000) << consumed;
+                self.tail_digit(x[l], r, s[l] as u32, g, out)
             });
         }
         std::array::from_fn(|l| {

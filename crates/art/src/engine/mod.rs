@@ -388,11 +388,20 @@ impl ArtOwen {
             s = self.child(s, d);
         }
         let r = w - consumed;
-        if r != 0 {
-            g ^= self.codes[s as usize];
-            out = (out << r) | ((x & ((1 << r) - 1)) ^ (g >> (64 - r)));
+        if r == 0 {
+            out
+        } else {
+            self.tail_digit(x, r, s, g, out)
         }
-        out
+    }
+
+    /// The partial tail digit of `r` bits (0 < r < q; translation only): `out` with the word's
+    /// last r bits appended, XORed with the top r bits of the pending translations `g` and of
+    /// the code of `s`, the symbol reached.
+    #[inline(always)]
+    fn tail_digit(&self, x: u64, r: u32, s: u32, g: u64, out: u64) -> u64 {
+        let g = g ^ self.codes[s as usize];
+        (out << r) | ((x & ((1 << r) - 1)) ^ (g >> (64 - r)))
     }
 
     #[inline(always)]
