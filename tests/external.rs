@@ -391,9 +391,13 @@ mod protocol_fuzz {
                                 count in 0usize..20, width64 in any::<bool>()) {
             let _ = decode_request(&bytes);
             let w = if width64 { Width::W64 } else { Width::W32 };
-            if let Ok(words) = decode_reply(&bytes, count, w, 1) {
-                prop_assert_eq!(words.len(), count);
-                prop_assert_eq!(&bytes[..4], b"GOWR");
+            for b in [2u64, 3, 65_535] {
+                let base = ProtocolBase::from_base(b).unwrap();
+                if let Ok(words) = decode_reply(&bytes, count, w, base, 1) {
+                    prop_assert_eq!(words.len(), count);
+                    prop_assert_eq!(&bytes[..4], b"GOWR");
+                    prop_assert!(words.iter().all(|&x| x <= base.largest_word(w)));
+                }
             }
         }
 
@@ -423,7 +427,8 @@ mod protocol_fuzz {
                 dim,
                 seed,
             };
-            let words: Vec<u64> = words.into_iter().map(u64::from).collect();
+            let bound = h.base.largest_word(h.width) + 1;
+            let words: Vec<u64> = words.into_iter().map(|w| u64::from(w) % bound).collect();
             let mut frame = encode_request(&h, &words).unwrap();
             prop_assert_eq!(&frame[4..6], &[2u8, 0][..]);
             let (back, decoded) = decode_request(&frame).unwrap();
@@ -435,6 +440,42 @@ mod protocol_fuzz {
             let mut binary = encode_request(&header(width64, q, dim, seed), &words).unwrap();
             binary[4] = 2;
             prop_assert!(decode_request(&binary).is_err());
+        }
+
+        /// A version 2 word at or above b^m is refused on every side: the host's encoder, the
+        /// child's decoder and the host's reply check (one such reply word once passed for
+        /// another word's image).
+        #[test]
+        fn base_b_words_at_or_above_b_to_the_m_are_refused(
+            b in 3u32..=65_535, width64 in any::<bool>(), at in 0usize..8, excess in 0u64..1000,
+            words in proptest::collection::vec(any::<u32>(), 8)) {
+            prop_assume!(!b.is_power_of_two());
+            let h = RequestHeader {
+                width: if width64 { Width::W64 } else { Width::W32 },
+                base: ProtocolBase::from_base(u64::from(b)).unwrap(),
+                dim: 0,
+                seed: 1,
+            };
+            let largest = h.base.largest_word(h.width);
+            let too_big = (largest + 1).saturating_add(excess) & h.width.mask();
+            prop_assume!(too_big > largest);
+            let mut words: Vec<u64> = words.into_iter().map(|w| u64::from(w) % (largest + 1)).collect();
+            let good = encode_request(&h, &words).unwrap();
+            words[at] = too_big;
+            prop_assert!(encode_request(&h, &words).is_err());
+            // The same frame with the bad word written in place.
+            let wb = h.width.bits() as usize / 8;
+            let mut frame = good.clone();
+            let start = 32 + at * wb;
+            frame[start..start + wb].copy_from_slice(&too_big.to_le_bytes()[..wb]);
+            prop_assert!(decode_request(&frame).is_err());
+            let mut reply = b"GOWR".to_vec();
+            reply.extend_from_slice(&8u32.to_le_bytes());
+            reply.extend_from_slice(&frame[32..]);
+            let e = decode_reply(&reply, 8, h.width, h.base, 1).unwrap_err().to_string();
+            prop_assert!(e.contains(&format!("reply word {at} is {too_big}")), "{}", e);
+            reply[8 + at * wb..8 + (at + 1) * wb].copy_from_slice(&largest.to_le_bytes()[..wb]);
+            prop_assert!(decode_reply(&reply, 8, h.width, h.base, 1).is_ok());
         }
 
         /// A corrupted header byte either is rejected or decodes to a frame that differs

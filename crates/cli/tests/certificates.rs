@@ -304,3 +304,66 @@ fn a_tampered_sweep_shard_is_refused_naming_the_field() {
         );
     }
 }
+
+/// A fixed job matrix with more shards than implementations: the empty shards say so, their
+/// certificates pass `certificate check`, and the merge of all of them is the whole run
+/// (before, shard 3/3 of two was refused by both, naming `parameters.shard` with no reason).
+#[test]
+fn shards_beyond_the_implementations_are_empty_and_merge() {
+    let dir = tempfile::tempdir().unwrap();
+    for n in [3usize, 28] {
+        let mut files = Vec::new();
+        for i in 1..=n {
+            let file = dir.path().join(format!("s{i}of{n}.json"));
+            let shard = format!("{i}/{n}");
+            let o = gartowen(&[
+                "verify",
+                "--impl",
+                "lk-hash",
+                "--impl",
+                "digital-shift",
+                "--shard",
+                &shard,
+                "--json",
+                file.to_str().unwrap(),
+            ]);
+            let err = String::from_utf8_lossy(&o.stderr);
+            assert_eq!(o.status.code(), Some(0), "{shard}: {err}");
+            assert_eq!(err.contains("holds none of the 2"), i > 2, "{shard}: {err}");
+            let audit = gartowen(&["certificate", "check", file.to_str().unwrap()]);
+            assert_eq!(
+                audit.status.code(),
+                Some(0),
+                "{shard}: {}",
+                String::from_utf8_lossy(&audit.stderr)
+            );
+            files.push(file.to_str().unwrap().to_string());
+        }
+        let merged = dir.path().join(format!("merged{n}.json"));
+        let mut args = vec!["verify", "--merge"];
+        args.extend(files.iter().map(String::as_str));
+        args.extend(["--json", merged.to_str().unwrap()]);
+        let o = gartowen(&args);
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        let doc: Value = serde_json::from_str(&std::fs::read_to_string(&merged).unwrap()).unwrap();
+        let names: Vec<&str> = doc["result"]["implementations"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|r| r["name"].as_str().unwrap())
+            .collect();
+        assert_eq!(names, ["lk-hash", "digital-shift"]);
+        // Without its empty shard the set is incomplete, and that is named.
+        let mut short = vec!["verify", "--merge"];
+        short.extend(files[..n - 1].iter().map(String::as_str));
+        let o = gartowen(&short);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert!(err.contains(&format!("shard {n}/{n} is missing")), "{err}");
+    }
+}

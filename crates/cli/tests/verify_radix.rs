@@ -142,3 +142,50 @@ fn the_built_in_base_3_oracle_passes_and_its_per_depth_mutant_fails_the_pair_law
     assert_eq!(code, Some(1));
     assert_verdicts(&r, &["pair-law", "collisions", "pair-lemma"]);
 }
+
+#[test]
+fn version_2_words_stay_below_b_to_the_m_at_full_level_and_in_64_bit_frames() {
+    // Before: a second batch of injectivity words (64-bit words cut to 32-bit frames) carried
+    // words ≥ 3^20, and x and x − 3^20 collided; with `--width 64` 20-digit words were judged
+    // against 3^20 while 40-digit frames were sent. A true bijection must pass both ways.
+    let dir = tempfile::tempdir().unwrap();
+    let owen = build_c_example(dir.path(), "owen_radix", &[]);
+    for args in [
+        vec!["--base", "3", "--level", "full"],
+        vec!["--base", "3", "--width", "64"],
+        vec!["--base", "5", "--width", "64"],
+    ] {
+        let mut all = vec!["--external", owen.as_str()];
+        all.extend_from_slice(&args);
+        let (code, err, r) = verify(&all, dir.path());
+        assert_eq!(code, Some(0), "{args:?}: {err}\n{r}");
+        assert_verdicts(&r, &[]);
+    }
+}
+
+#[test]
+fn a_reply_word_at_b_to_the_m_is_named_as_garbage() {
+    // The largest word answered with 3^20, one past the last: every reply is range-checked,
+    // so the `function` check's request of the largest word fails the program (before, the
+    // run passed).
+    let dir = tempfile::tempdir().unwrap();
+    let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/programs");
+    let out = dir.path().join("radix_overflow");
+    let include = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/external");
+    let status = std::process::Command::new("cc")
+        .args(["-O2", "-I"])
+        .arg(&include)
+        .arg("-o")
+        .arg(&out)
+        .arg(src.join("radix_overflow.c"))
+        .status()
+        .expect("cc");
+    assert!(status.success());
+    let o = gartowen(&["verify", "--external", out.to_str().unwrap(), "--base", "3"]);
+    let text = String::from_utf8_lossy(&o.stdout).to_string() + &String::from_utf8_lossy(&o.stderr);
+    assert_ne!(o.status.code(), Some(0), "{text}");
+    assert!(
+        text.contains("reply word") && text.contains("not below 3486784401 = 3^20"),
+        "{text}"
+    );
+}

@@ -192,6 +192,12 @@ pub trait RadixScrambler: Send + Sync {
     /// The scrambled word for dimension `dim` (`x` below b^m of `width`'s layout).
     fn scramble(&self, x: u64, width: Width, dim: u32) -> u64;
 
+    /// Whether it scrambles words of `width` bits (every width that holds a digit, by
+    /// default; a program that speaks one frame width answers that one alone).
+    fn supports_width(&self, width: Width) -> bool {
+        RadixLayout::new(width, self.radix()).is_ok()
+    }
+
     /// Scrambles `words` in place; equal to [`RadixScrambler::scramble`] on each word.
     fn scramble_batch(&self, words: &mut [u64], width: Width, dim: u32) {
         for w in words.iter_mut() {

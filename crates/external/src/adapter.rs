@@ -108,6 +108,10 @@ impl RadixScrambler for ExternalRadixScrambler {
     fn claim(&self) -> Claim {
         self.words.claim
     }
+    /// The frames' width alone: words of another width would be cut or misread.
+    fn supports_width(&self, width: Width) -> bool {
+        Scrambler::supports_width(&self.words, width)
+    }
     fn scramble(&self, x: u64, width: Width, dim: u32) -> u64 {
         Scrambler::scramble(&self.words, x, width, dim)
     }

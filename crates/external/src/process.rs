@@ -278,7 +278,13 @@ impl ExternalProcess {
         self.with_session(|s| {
             let frame = encode_request(&self.header(seed, dim), words)?;
             let need = self.exchange(s, &frame, words.len())?;
-            let out = decode_reply(&s.pending[..need], words.len(), self.width, s.batches);
+            let out = decode_reply(
+                &s.pending[..need],
+                words.len(),
+                self.width,
+                self.base,
+                s.batches,
+            );
             s.pending.clear();
             out
         })
@@ -310,7 +316,13 @@ impl ExternalProcess {
             let result = self.exchange(s, &frame, words.len());
             s.frame = frame;
             let need = result?;
-            check_reply(&s.pending[..need], words.len(), self.width, s.batches)?;
+            check_reply(
+                &s.pending[..need],
+                words.len(),
+                self.width,
+                self.base,
+                s.batches,
+            )?;
             for (w, b) in words.iter_mut().zip(s.pending[8..need].chunks_exact(4)) {
                 *w = u32::from_le_bytes(b.try_into().expect("4 bytes"));
             }

@@ -1,7 +1,7 @@
 //! The protocol's frames as bytes: request encoding and decoding, reply checks (no I/O).
 
 use crate::error::ExternalError;
-use gartowen_core::{CoreError, PowerOfTwoBase, Radix, Width};
+use gartowen_core::{CoreError, PowerOfTwoBase, Radix, RadixLayout, Width};
 
 /// Request magic, `GOWQ`.
 pub const REQUEST_MAGIC: [u8; 4] = *b"GOWQ";
@@ -73,6 +73,24 @@ impl ProtocolBase {
             ProtocolBase::Radix(r) => Some(r),
         }
     }
+
+    /// The largest word a frame of `width` bits may carry either way: 2^W − 1 in version 1,
+    /// b^m − 1 in version 2 (m the most base-b digits whose b^m fits W bits).
+    ///
+    /// ```
+    /// use gartowen_core::Width;
+    /// use gartowen_external::protocol::ProtocolBase;
+    /// let three = ProtocolBase::from_base(3).unwrap();
+    /// assert_eq!(three.largest_word(Width::W32), 3u64.pow(20) - 1);
+    /// assert_eq!(ProtocolBase::from_base(4).unwrap().largest_word(Width::W32), u32::MAX as u64);
+    /// ```
+    pub fn largest_word(self, width: Width) -> u64 {
+        match self {
+            ProtocolBase::PowerOfTwo(_) => width.mask(),
+            // Every base up to 65535 has a digit in 32 bits, so the layout exists.
+            ProtocolBase::Radix(r) => RadixLayout::new(width, r).map_or(0, |l| l.capacity() - 1),
+        }
+    }
 }
 
 impl From<PowerOfTwoBase> for ProtocolBase {
@@ -100,6 +118,14 @@ pub fn encode_request(h: &RequestHeader, words: &[u64]) -> Result<Vec<u8>, Exter
         return Err(ExternalError::BadRequest(format!(
             "{} words (1..={MAX_BATCH} allowed)",
             words.len()
+        )));
+    }
+    let largest = h.base.largest_word(h.width);
+    if let Some((k, w)) = words.iter().enumerate().find(|(_, &w)| w > largest) {
+        return Err(ExternalError::BadRequest(format!(
+            "word {k} is {w:#x}, above the largest {}-bit word of base {} ({largest:#x})",
+            h.width.bits(),
+            h.base.get()
         )));
     }
     let wb = h.width.bits() as usize / 8;
@@ -169,6 +195,13 @@ pub fn decode_request(bytes: &[u8]) -> Result<(RequestHeader, Vec<u64>), String>
     }
     let seed = u64::from_le_bytes(bytes[24..32].try_into().expect("8 bytes"));
     let words = words_from_le(&bytes[HEADER_BYTES..], wb);
+    let largest = base.largest_word(width);
+    if let Some((k, w)) = words.iter().enumerate().find(|(_, &w)| w > largest) {
+        return Err(format!(
+            "word {k} is {w:#x}, above the largest word of base {} ({largest:#x})",
+            base.get()
+        ));
+    }
     Ok((
         RequestHeader {
             width,
@@ -180,22 +213,25 @@ pub fn decode_request(bytes: &[u8]) -> Result<(RequestHeader, Vec<u64>), String>
     ))
 }
 
-/// Decodes a complete reply of `count` words of `width` bits for request `batch`.
+/// Decodes a complete reply of `count` words of `width` bits in `base` for request `batch`.
 pub fn decode_reply(
     bytes: &[u8],
     count: usize,
     width: Width,
+    base: ProtocolBase,
     batch: u64,
 ) -> Result<Vec<u64>, ExternalError> {
-    check_reply(bytes, count, width, batch)?;
+    check_reply(bytes, count, width, base, batch)?;
     Ok(words_from_le(&bytes[8..], width.bits() as usize / 8))
 }
 
-/// Checks a complete reply's length, magic and count.
+/// Checks a complete reply's length, magic and count, and that every word is one of the
+/// base's words (below b^m in version 2: a larger one would pass for another word's image).
 pub(super) fn check_reply(
     bytes: &[u8],
     count: usize,
     width: Width,
+    base: ProtocolBase,
     batch: u64,
 ) -> Result<(), ExternalError> {
     let wb = width.bits() as usize / 8;
@@ -222,6 +258,32 @@ pub(super) fn check_reply(
             batch,
             detail: format!("reply count {n}, the request had {count}"),
         });
+    }
+    let largest = base.largest_word(width);
+    if largest != width.mask() {
+        let wb = width.bits() as usize / 8;
+        let out_of_range = bytes[8..]
+            .chunks_exact(wb)
+            .map(|c| {
+                let mut b = [0u8; 8];
+                b[..wb].copy_from_slice(c);
+                u64::from_le_bytes(b)
+            })
+            .enumerate()
+            .find(|&(_, w)| w > largest);
+        if let Some((k, w)) = out_of_range {
+            return Err(ExternalError::Garbage {
+                batch,
+                detail: format!(
+                    "reply word {k} is {w}, not below {} = {}^{} (version 2 words are base-{} \
+                     digit integers)",
+                    largest as u128 + 1,
+                    base.get(),
+                    base.radix().map_or(0, |r| r.digits_in(width)),
+                    base.get()
+                ),
+            });
+        }
     }
     Ok(())
 }

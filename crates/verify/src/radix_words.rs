@@ -30,7 +30,7 @@ impl Scrambler for RadixWords {
         self.0.scramble_batch(words, width, dim)
     }
     fn supports_width(&self, width: Width) -> bool {
-        RadixLayout::new(width, self.0.radix()).is_ok()
+        RadixLayout::new(width, self.0.radix()).is_ok() && self.0.supports_width(width)
     }
     fn inverse(&self) -> Option<&dyn Unscramble> {
         self.0

@@ -2,7 +2,7 @@
 //! a reply of any count and width. They must return an error, never panic or over-allocate.
 
 use gartowen_core::Width;
-use gartowen_external::{decode_reply, decode_request, encode_request};
+use gartowen_external::{decode_reply, decode_request, encode_request, ProtocolBase};
 
 fn main() {
     afl::fuzz!(|data: &[u8]| {
@@ -13,8 +13,11 @@ fn main() {
         }
         let count = data.first().map_or(0, |&b| b as usize);
         for width in [Width::W32, Width::W64] {
-            if let Ok(words) = decode_reply(data, count, width, 1) {
-                assert_eq!(words.len(), count);
+            for base in [2, 3, 65_535].map(|b| ProtocolBase::from_base(b).expect("a base")) {
+                if let Ok(words) = decode_reply(data, count, width, base, 1) {
+                    assert_eq!(words.len(), count);
+                    assert!(words.iter().all(|&w| w <= base.largest_word(width)));
+                }
             }
         }
     });

@@ -237,14 +237,54 @@ fn the_whole_run_must_hold_every_implementation_and_the_judged_count() {
         "result.implementations"
     );
     assert!(audit_merged(&run.reports, 2, Some(2)).is_err());
-    // A shard of two is checked as far as one shard shows: its own count is not the run's.
+    // A shard is checked as far as one shard shows: its own count is not the run's, but
+    // it must hold exactly its members (shard 2/2 of four: implementations 1 and 3).
     let shard = edited(&c, |v| {
-        v["parameters"]["shard"] = json!({"index": 1, "count": 2});
+        v["parameters"]["shard"] = json!({"index": 2, "count": 2});
         v["parameters"]["implementations_total"] = json!(4);
+        v["result"]["implementations"][0]["index"] = json!(1);
+        v["result"]["implementations"][1]["index"] = json!(3);
     });
     let run = audit_verify(&shard, &registry).unwrap();
-    assert_eq!(run.shard, (1, 2));
+    assert_eq!(run.shard, (2, 2));
     assert_eq!(run.implementations_total, 4);
+    for (index, count, total) in [(1, 2, 4), (2, 3, 4), (1, 3, 4), (2, 2, 6)] {
+        let wrong = edited(&shard, |v| {
+            v["parameters"]["shard"] = json!({"index": index, "count": count});
+            v["parameters"]["implementations_total"] = json!(total);
+        });
+        let e = audit_verify(&wrong, &registry).unwrap_err();
+        assert_eq!(
+            e.field, "result.implementations",
+            "{index}/{count} of {total}: {e}"
+        );
+        assert!(e.problem.contains("holds"), "{e}");
+    }
+    // A fixed matrix with more shards than implementations: shard 3/3 of two is empty and
+    // passes (before, it was refused with no reason); the whole run may not be empty.
+    let empty = |index: u64, count: u64, verdict: &str| {
+        edited(&c, |v| {
+            v["parameters"]["shard"] = json!({"index": index, "count": count});
+            v["result"]["implementations"] = json!([]);
+            v["verdict"] = json!(verdict);
+        })
+    };
+    let run = audit_verify(&empty(3, 3, "pass"), &registry).unwrap();
+    assert_eq!((run.shard, run.reports.len()), ((3, 3), 0));
+    assert!(audit_verify(&empty(28, 28, "pass"), &registry).is_ok());
+    assert_eq!(
+        audit_verify(&empty(3, 3, "fail"), &registry)
+            .unwrap_err()
+            .field,
+        "verdict"
+    );
+    for (index, count) in [(1, 1), (2, 3), (1, 3)] {
+        let e = audit_verify(&empty(index, count, "pass"), &registry).unwrap_err();
+        assert_eq!(e.field, "result.implementations", "{index}/{count}: {e}");
+    }
+    let e = audit_verify(&empty(4, 3, "pass"), &registry).unwrap_err();
+    assert_eq!(e.field, "parameters.shard");
+    assert!(e.problem.contains("1 ≤ I ≤ N"), "{e}");
     assert_eq!(
         AuditError {
             field: "f".into(),
