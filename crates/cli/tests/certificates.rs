@@ -367,3 +367,117 @@ fn shards_beyond_the_implementations_are_empty_and_merge() {
         assert!(err.contains(&format!("shard {n}/{n} is missing")), "{err}");
     }
 }
+
+/// Writes `doc` to `path` with a digest recomputed as a forger would (the digest is unkeyed).
+fn forge(path: &Path, mut doc: Value) {
+    doc.as_object_mut().unwrap().remove("digest");
+    let digest = gartowen::certificate::content_digest(&doc);
+    doc["digest"] = digest.into();
+    std::fs::write(path, serde_json::to_string_pretty(&doc).unwrap()).unwrap();
+}
+
+/// Forgeries an unkeyed digest cannot stop, each refused by content (issue 59): the level
+/// relabelled with its seed count (the sub-tests keep n = 2000), a failing verify report
+/// relabelled a passing `check`, a full run relabelled quick, `pass` on a discrepancy.
+#[test]
+fn relabelled_certificates_with_recomputed_digests_are_refused_by_content() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = |n: &str| dir.path().join(n);
+    let run = |level: &str, file: &str| {
+        let out = path(file);
+        let o = gartowen(&[
+            "verify",
+            "--impl",
+            "lk-hash",
+            "--impl",
+            "none",
+            "--claim",
+            "owen",
+            "--level",
+            level,
+            "--json",
+            out.to_str().unwrap(),
+        ]);
+        assert_eq!(
+            o.status.code(),
+            Some(1),
+            "{}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        serde_json::from_str::<Value>(&std::fs::read_to_string(out).unwrap()).unwrap()
+    };
+    let quick = run("quick", "quick.json");
+    let full = run("full", "full.json");
+    let points = path("p.npy");
+    let points = points.to_str().unwrap();
+    let o = gartowen(&[
+        "generate", "--seq", "sobol", "--dims", "2", "--log2-n", "6", "-o", points,
+    ]);
+    assert!(o.status.success());
+    let o = gartowen(&["discrepancy", points, "--json"]);
+    let discrepancy: Value = serde_json::from_slice(&o.stdout).unwrap();
+    type Forgery = (&'static str, Value, &'static str);
+    let edit = |doc: &Value, f: &dyn Fn(&mut Value)| {
+        let mut d = doc.clone();
+        f(&mut d);
+        d
+    };
+    let forgeries: Vec<Forgery> = vec![
+        (
+            "quick relabelled full with node_law_seeds changed",
+            edit(&quick, &|d| {
+                d["parameters"]["level"] = "full".into();
+                d["parameters"]["node_law_seeds"] = 10_000.into();
+            }),
+            "parameters.level",
+        ),
+        (
+            "a failing verify report relabelled a passing check",
+            edit(&quick, &|d| {
+                d["command"] = "check".into();
+                d["verdict"] = "pass".into();
+            }),
+            "command",
+        ),
+        (
+            "full relabelled quick",
+            edit(&full, &|d| {
+                d["parameters"]["level"] = "quick".into();
+                d["parameters"]["node_law_seeds"] = 2000.into();
+            }),
+            "parameters.level",
+        ),
+        (
+            "pass on a discrepancy certificate",
+            edit(&discrepancy, &|d| d["verdict"] = "pass".into()),
+            "verdict",
+        ),
+    ];
+    // The untouched ones pass, re-digested or not.
+    for (name, doc) in [
+        ("quick", &quick),
+        ("full", &full),
+        ("discrepancy", &discrepancy),
+    ] {
+        let file = path(&format!("{name}-again.json"));
+        forge(&file, doc.clone());
+        let o = gartowen(&["certificate", "check", file.to_str().unwrap()]);
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{name}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+    }
+    for (what, doc, field) in forgeries {
+        let file = path("forged.json");
+        forge(&file, doc);
+        let o = gartowen(&["certificate", "check", file.to_str().unwrap()]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{what}: {err}");
+        assert!(
+            err.contains(&format!("{field}:")),
+            "{what}: names {field}: {err}"
+        );
+    }
+}

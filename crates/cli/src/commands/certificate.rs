@@ -2,6 +2,7 @@
 
 use crate::CliError;
 use clap::{Args, Subcommand};
+use gartowen::audit::Content;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -38,25 +39,29 @@ pub fn run(a: CertificateArgs) -> Result<ExitCode, CliError> {
     let registry = gartowen::registry();
     for p in &files {
         let (cert, text) = super::shards::read_certificate(p)?;
-        let sweep = !cert.parameters["sweep"].is_null();
-        let what = if cert.command == "verify" && sweep {
-            super::sweep::audit(&cert).map_err(|e| super::shards::refuse(p, e))?
-        } else if cert.command == "verify" {
-            let run = gartowen::audit::audit_verify(&cert, &registry)
-                .map_err(|e| super::shards::refuse(p, e))?;
-            let (i, n) = run.shard;
-            format!(
-                "verify, {} level, {} implementation(s){}, verdicts recomputed",
-                run.level.name(),
-                run.reports.len(),
-                if n > 1 {
-                    format!(", shard {i}/{n}")
-                } else {
-                    String::new()
-                }
-            )
-        } else {
-            format!("{}, fields read", cert.command)
+        let refuse = |e: gartowen::audit::AuditError| super::shards::refuse(p, e);
+        // What the file is comes from its fields, not its `command` label: a verify report
+        // relabelled `check` is refused, not read as a check.
+        let what = match gartowen::audit::content_of(&cert).map_err(refuse)? {
+            Content::Sweep => {
+                super::sweep::audit(&cert).map_err(|e| super::shards::refuse(p, e))?
+            }
+            Content::Verify => {
+                let run = gartowen::audit::audit_verify(&cert, &registry).map_err(refuse)?;
+                let (i, n) = run.shard;
+                format!(
+                    "verify, {} level, {} implementation(s){}, verdicts recomputed",
+                    run.level.name(),
+                    run.reports.len(),
+                    if n > 1 {
+                        format!(", shard {i}/{n}")
+                    } else {
+                        String::new()
+                    }
+                )
+            }
+            Content::Check => gartowen::audit::audit_check(&cert).map_err(refuse)?,
+            Content::Discrepancy => gartowen::audit::audit_discrepancy(&cert).map_err(refuse)?,
         };
         super::shards::check_digest(p, &text)?;
         crate::outln!(

@@ -16,6 +16,11 @@ use gartowen_core::{Claim, Width};
 use serde_json::Value;
 use std::fmt;
 
+mod content;
+mod sizes;
+
+pub use content::{audit_check, audit_discrepancy, content_of, Content};
+
 /// An inconsistency, naming the field (a JSON path) and what is wrong with it.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct AuditError {
@@ -165,6 +170,7 @@ pub fn audit_verify(cert: &Certificate, registry: &Registry) -> Result<AuditedRu
         }
     }
     shard_members(&reports, shard, total, external.is_some())?;
+    sizes::sizes_match_level(&reports, level)?;
     if let Some(j) = judged {
         if j > total {
             return Err(refuse(

@@ -184,6 +184,14 @@ fn an_untouched_run_passes_and_every_edit_is_refused_naming_its_field() {
             "parameters.node_law_seeds".into(),
         ),
         (
+            // The seed count relabelled with the level: the sub-tests still say n = 2000.
+            Box::new(|v: &mut Value| {
+                v["parameters"]["level"] = json!("full");
+                v["parameters"]["node_law_seeds"] = json!(10_000);
+            }),
+            "parameters.level".into(),
+        ),
+        (
             set("/parameters/level".into(), json!("often")),
             "parameters.level".into(),
         ),
