@@ -133,6 +133,19 @@ pub fn radix_of_request(
             Err(_) => Ok(Some(gartowen_core::Radix::new(default)?)),
         };
     }
+    if let Some(flag) = scramble_base {
+        // A request that names its base and a flag that names another: refused, not one of
+        // them silently preferred.
+        let named = gartowen_core::registry::ScramblerRequest::parse(request)?
+            .option("base")
+            .map(str::to_string);
+        if let Some(text) = named.filter(|t| t.parse::<u64>().ok() != Some(flag)) {
+            return Err(RequestError::Invalid(format!(
+                "--scramble-base {flag} conflicts with {request}, which names base {text}: \
+                 drop one"
+            )));
+        }
+    }
     Ok(gartowen_owen::registry::requested_radix(request, default)?)
 }
 

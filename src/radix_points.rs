@@ -76,41 +76,63 @@ pub fn digits_for(radix: Radix, n: u64) -> u32 {
     d
 }
 
-/// Float values (64-bit words holding them exactly) as base-b digit words of `layout`
-/// (a 64-bit layout), snapped to the grid of `digits` digits (default [`digits_for`] the
-/// number of points). An error names a coordinate too near a grid point to read safely.
+/// Float values (64-bit words holding them exactly) as base-b digit words of `layout`,
+/// each snapped to the grid of `digits` digits. Without `digits`, the shallowest grid from
+/// [`digits_for`] the number of points down that every value lies on (a point past the first
+/// b^d of a sequence carries more digits than ⌈log_b N⌉). A value on no grid the float
+/// resolves, or (with `digits`) off the grid asked for, is refused, named: read as it is, its
+/// low digits would be rounding noise, and the scrambled points would not be the generator's.
 pub fn from_floats(
     points: &PointSet,
     layout: RadixLayout,
     digits: Option<u32>,
 ) -> Result<RadixPoints, RequestError> {
     let b = layout.radix().get() as u64;
-    let depth = digits.unwrap_or_else(|| digits_for(layout.radix(), points.len() as u64));
-    // Deeper than a float resolves (and so deeper than the word) is the snap rule's refusal.
-    if depth == 0 {
-        return Err(RequestError::Invalid(
-            "--digits 0: the values carry at least one base-b digit".into(),
-        ));
-    }
-    if let Err(e) = gartowen_netcheck::snap::grid(b, depth, F64_RADIUS_LOG2) {
-        let why = match e {
-            gartowen_netcheck::NetError::BadValue { reason, .. } => reason,
-            other => other.to_string(),
-        };
-        return Err(RequestError::Invalid(format!(
-            "--digits {depth}: {}",
-            why.replace("this check needs", "asked for")
-        )));
-    }
-    let snapped = match snap_to_grid(points, b, depth, F64_RADIUS_LOG2)
-        .map_err(|e| RequestError::Invalid(e.to_string()))?
-    {
-        Ok((set, _)) => set,
-        Err(ambiguous) => {
-            return Err(RequestError::Invalid(format!(
-                "{ambiguous}: too near the base-{b} grid of depth {depth} to read its digits \
-                 safely (pass --digits to choose the depth the values carry)"
-            )))
+    let most = layout.num_digits();
+    let depth = match digits {
+        Some(0) => {
+            return Err(RequestError::Invalid(
+                "--digits 0: the values carry at least one base-b digit".into(),
+            ))
+        }
+        Some(d) => {
+            if d > most {
+                return Err(RequestError::Invalid(format!(
+                    "--digits {d}: {}-bit words hold {most} base-{b} digits",
+                    layout.width().bits()
+                )));
+            }
+            d
+        }
+        None => digits_for(layout.radix(), points.len() as u64).min(most),
+    };
+    check_depth(b, depth)?;
+    let mut depth = depth;
+    let snapped = loop {
+        let snapped = snap(points, b, depth)?;
+        let off = first_off_grid(&snapped, b, depth);
+        match off {
+            None => break snapped,
+            // The default depth grows until every value is on its grid.
+            Some(_) if digits.is_none() && depth < most && check_depth(b, depth + 1).is_ok() => {
+                depth += 1
+            }
+            Some((point, dim)) => {
+                let value = points.column(dim)[point] as f64 / 2f64.powi(64);
+                let why = if digits.is_some() {
+                    format!("pass a larger --digits than {depth}")
+                } else {
+                    format!(
+                        "no grid of up to {depth} digits holds it: not a base-{b} point a \
+                         {}-bit digit word can carry",
+                        layout.width().bits()
+                    )
+                };
+                return Err(RequestError::Invalid(format!(
+                    "point {point} coordinate {dim} = {value:e} is not a multiple of \
+                     {b}^-{depth} within 2^-{F64_RADIUS_LOG2} ({why})"
+                )));
+            }
         }
     };
     let capacity = layout.capacity() as u128;
@@ -126,6 +148,51 @@ pub fn from_floats(
         })
         .collect();
     Ok(RadixPoints { layout, columns })
+}
+
+/// Refuses a depth deeper than a float resolves, in `--digits` words.
+fn check_depth(b: u64, depth: u32) -> Result<(), RequestError> {
+    gartowen_netcheck::snap::grid(b, depth, F64_RADIUS_LOG2)
+        .map(|_| ())
+        .map_err(|e| {
+            let why = match e {
+                gartowen_netcheck::NetError::BadValue { reason, .. } => reason,
+                other => other.to_string(),
+            };
+            RequestError::Invalid(format!(
+                "--digits {depth}: {}",
+                why.replace("this check needs", "asked for")
+            ))
+        })
+}
+
+/// The points snapped to the grid of `depth`, or the ambiguous coordinate refused.
+fn snap(points: &PointSet, b: u64, depth: u32) -> Result<PointSet, RequestError> {
+    match snap_to_grid(points, b, depth, F64_RADIUS_LOG2)
+        .map_err(|e| RequestError::Invalid(e.to_string()))?
+    {
+        Ok((set, _)) => Ok(set),
+        Err(ambiguous) => Err(RequestError::Invalid(format!(
+            "{ambiguous}: too near the base-{b} grid of depth {depth} to read its digits \
+             safely (pass --digits to choose the depth the values carry)"
+        ))),
+    }
+}
+
+/// The first coordinate of a snapped set that is not a grid point ⌈j·2^64/b^depth⌉ (snapping
+/// leaves a value clear of the grid as it is).
+fn first_off_grid(snapped: &PointSet, b: u64, depth: u32) -> Option<(usize, usize)> {
+    let bm = (b as u128).pow(depth);
+    (0..snapped.dims()).find_map(|dim| {
+        snapped
+            .column(dim)
+            .iter()
+            .enumerate()
+            .find_map(|(point, &w)| {
+                let j = (w as u128 * bm) >> 64;
+                ((j << 64).div_ceil(bm) != w as u128).then_some((point, dim))
+            })
+    })
 }
 
 /// Words that are already base-b digit integers (below b^m of `layout`); an error names the

@@ -8,7 +8,7 @@ use numpy::{
     dtype, IntoPyArray, PyArrayDescrMethods, PyArrayDyn, PyArrayMethods, PyUntypedArray,
     PyUntypedArrayMethods,
 };
-use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::exceptions::{PyMemoryError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 
 /// What the caller passed: the element type decides the width and the output type.
@@ -50,6 +50,25 @@ impl InputPoints {
     }
 }
 
+/// An empty vector with room for `len` elements, or `MemoryError` naming `what` (under a
+/// memory cap an infallible allocation would abort the interpreter).
+pub fn try_vec<T>(len: usize, what: &str) -> PyResult<Vec<T>> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(len).map_err(|_| {
+        PyMemoryError::new_err(format!(
+            "cannot allocate {len} elements ({} MiB) for {what}",
+            len.saturating_mul(std::mem::size_of::<T>()) >> 20
+        ))
+    })?;
+    Ok(v)
+}
+
+/// Raises `MemoryError` unless `bytes` can be allocated now: checked before work whose
+/// transient buffers are allocated where a failure cannot be caught.
+pub fn ensure_room(bytes: usize, what: &str) -> PyResult<()> {
+    try_vec::<u8>(bytes, what).map(drop)
+}
+
 /// Reads `obj` (named `what` in messages) as points, float64 values exactly.
 pub fn read_points(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<InputPoints> {
     read_points_as(obj, what, false)
@@ -88,7 +107,7 @@ pub fn read_points_as(obj: &Bound<'_, PyAny>, what: &str, floor: bool) -> PyResu
     let (element, words) = if dt.is_equiv_to(&dtype::<f64>(py)) {
         let a = array.cast::<PyArrayDyn<f64>>()?.readonly();
         let view = a.as_array();
-        let mut words = Vec::with_capacity(n * dims);
+        let mut words = try_vec(n.saturating_mul(dims), what)?;
         for (k, &v) in view.iter().enumerate() {
             let w = if floor {
                 gartowen::core::word_from_f64_floor(v)
@@ -107,14 +126,16 @@ pub fn read_points_as(obj: &Bound<'_, PyAny>, what: &str, floor: bool) -> PyResu
         (Element::F64, words)
     } else if dt.is_equiv_to(&dtype::<u32>(py)) {
         let a = array.cast::<PyArrayDyn<u32>>()?.readonly();
-        let words = a.as_array().iter().map(|&x| x as u64).collect();
+        let mut words = try_vec(n.saturating_mul(dims), what)?;
+        words.extend(a.as_array().iter().map(|&x| x as u64));
         (Element::U32, words)
     } else if dt.is_equiv_to(&dtype::<u64>(py)) {
         let a = array.cast::<PyArrayDyn<u64>>()?.readonly();
-        let words = match a.as_slice() {
-            Ok(s) => s.to_vec(),
-            Err(_) => a.as_array().iter().copied().collect(),
-        };
+        let mut words = try_vec(n.saturating_mul(dims), what)?;
+        match a.as_slice() {
+            Ok(s) => words.extend_from_slice(s),
+            Err(_) => words.extend(a.as_array().iter().copied()),
+        }
         (Element::U64, words)
     } else {
         return Err(PyTypeError::new_err(format!(
@@ -146,14 +167,16 @@ pub fn to_array<'py>(
     let bad = |e: numpy::ndarray::ShapeError| PyValueError::new_err(e.to_string());
     Ok(match element {
         Element::F64 => {
-            let v: Vec<f64> = words.iter().map(|&x| word_to_f64(x, width)).collect();
+            let mut v: Vec<f64> = try_vec(words.len(), "the scrambled points")?;
+            v.extend(words.iter().map(|&x| word_to_f64(x, width)));
             Array2::from_shape_vec(shape, v)
                 .map_err(bad)?
                 .into_pyarray(py)
                 .into_any()
         }
         Element::U32 => {
-            let v: Vec<u32> = words.iter().map(|&x| x as u32).collect();
+            let mut v: Vec<u32> = try_vec(words.len(), "the scrambled words")?;
+            v.extend(words.iter().map(|&x| x as u32));
             Array2::from_shape_vec(shape, v)
                 .map_err(bad)?
                 .into_pyarray(py)

@@ -83,7 +83,13 @@ fn generate<'py>(
         shape: [usize; 2],
         convert: impl Fn(u64) -> T + Sync + Send,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let array = numpy::PyArray2::<T>::zeros(py, shape, false);
+        // numpy.zeros raises MemoryError where the points do not fit (PyArray2::zeros would
+        // panic instead).
+        let array = py
+            .import("numpy")?
+            .getattr("zeros")?
+            .call1((shape, numpy::dtype::<T>(py)))?
+            .cast_into::<numpy::PyArray2<T>>()?;
         // SAFETY: the array was just created here, so no other reference to its data exists
         // while it is filled.
         let data = unsafe { numpy::PyArrayMethods::as_slice_mut(&array) }.map_err(value_error)?;
@@ -114,6 +120,14 @@ fn scramble<'py>(
     let input = read_points(points, "points")?;
     let width = input.width();
     let (n, dims, element) = (input.n, input.dims, input.element);
+    // What the scramble allocates besides the words read: a column and the output array in
+    // the binary path; the digit columns, their snapped copy and the rows in base b.
+    let words_needed = if gartowen::generate::radix_of_request(name, base).is_ok_and(|r| r.is_some()) {
+        n.saturating_mul(dims).saturating_mul(4)
+    } else {
+        n.saturating_add(n.saturating_mul(dims))
+    };
+    arrays::ensure_room(words_needed.saturating_mul(8), "scrambling the points")?;
     let mut flat = input.words;
     let radix = gartowen::generate::radix_of_request(name, base).map_err(value_error)?;
     if let Some(radix) = radix {
@@ -150,7 +164,7 @@ fn scramble<'py>(
                 width.bits()
             )));
         }
-        let mut column = vec![0u64; n];
+        let mut column = vec![0u64; n]; // room checked above
         for j in 0..dims {
             for (i, x) in column.iter_mut().enumerate() {
                 *x = flat[i * dims + j];

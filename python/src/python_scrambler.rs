@@ -193,6 +193,13 @@ impl PythonFunction {
                 store(k, y as u64)?;
             }
         } else if dt.is_equiv_to(&dtype::<u64>(py)) {
+            if self.width == Width::W32 {
+                // The words went out as uint32: a uint64 reply is not what was sent back,
+                // whatever its values (a silent widening hides a dtype bug in `fn`).
+                return Err(PyTypeError::new_err(format!(
+                    "{what} dtype uint64 at width 32: return uint32 words, the input's dtype"
+                )));
+            }
             let a = array.cast::<PyArray1<u64>>()?.readonly();
             for (k, &y) in a.as_array().iter().enumerate() {
                 store(k, y)?;

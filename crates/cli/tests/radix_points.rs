@@ -41,6 +41,8 @@ fn scrambling_base_3_floats_equals_generating_them_scrambled_and_keeps_the_net()
                 path(&plain),
                 "--scramble-base",
                 "3",
+                "--bits",
+                "64",
                 "-o",
                 path(&read),
             ][..],
@@ -236,7 +238,7 @@ fn base_b_requests_that_cannot_work_exit_2_and_leave_the_output_alone() {
                 "-o",
                 o,
             ],
-            "--digits applies",
+            "--digits and --bits apply",
         ),
         (
             &[
@@ -260,4 +262,135 @@ fn base_b_requests_that_cannot_work_exit_2_and_leave_the_output_alone() {
         assert!(err.contains(fragment), "{args:?}: {err}");
         assert_eq!(std::fs::read_to_string(&out).unwrap(), "untouched\n");
     }
+}
+
+/// Points past the first b^d of a sequence carry more digits than ⌈log_b N⌉: ten Faure points
+/// from index 600 in base 5 have four. The default depth grows until every value is on its
+/// grid, so `scramble none` gives the points back and Owen's scramble equals `generate`'s, at
+/// both widths (before, the values were floored to 5^-27 units and misread, silently);
+/// `--digits` too small for them is refused, naming the point.
+#[test]
+fn points_with_more_digits_than_the_count_needs_are_read_exactly_or_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let (plain, made, read) = (
+        dir.path().join("plain.csv"),
+        dir.path().join("made.csv"),
+        dir.path().join("read.csv"),
+    );
+    for bits in ["32", "64"] {
+        let faure = [
+            "generate",
+            "--seq",
+            "faure:base=5",
+            "--dims",
+            "2",
+            "--n",
+            "10",
+            "--start",
+            "600",
+            "--bits",
+            bits,
+        ];
+        let (code, _, err) = run(&[&faure[..], &["-o", path(&plain)]].concat());
+        assert_eq!(code, 0, "{err}");
+        for (scramble, expected) in [("none", &plain), ("owen-oracle", &made)] {
+            let with = ["--scramble", scramble, "--seed", "3"];
+            let (code, _, err) = run(&[&faure[..], &with, &["-o", path(&made)]].concat());
+            assert_eq!(code, 0, "{err}");
+            let mut args = vec!["scramble", path(&plain), "--scramble-base", "5", "-o"];
+            args.push(path(&read));
+            args.extend(with);
+            if bits == "64" {
+                args.extend(["--bits", "64"]);
+            }
+            let (code, _, err) = run(&args);
+            assert_eq!(code, 0, "{bits} {scramble}: {err}");
+            assert_eq!(
+                std::fs::read_to_string(&read).unwrap(),
+                std::fs::read_to_string(expected).unwrap(),
+                "{bits} {scramble}"
+            );
+            std::fs::remove_file(&read).unwrap();
+        }
+    }
+    let (code, _, err) = run(&[
+        "scramble",
+        path(&plain),
+        "--scramble-base",
+        "5",
+        "--scramble",
+        "none",
+        "--digits",
+        "3",
+        "-o",
+        path(&read),
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("point 0 coordinate 0") && err.contains("--digits"),
+        "{err}"
+    );
+    assert!(!read.exists());
+    // Values that are on no base-5 grid a float resolves (binary fractions) are refused too.
+    std::fs::write(&plain, "0.1,0.5\n0.3,0.7\n").unwrap();
+    let (code, _, err) = run(&[
+        "scramble",
+        path(&plain),
+        "--scramble-base",
+        "5",
+        "--scramble",
+        "none",
+        "-o",
+        path(&read),
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("no grid of up to"), "{err}");
+}
+
+/// A request that names its base and a `--scramble-base` that names another is refused with
+/// exit 2 naming both, as `--help` says (before, `:base=5` won over `--scramble-base 3`).
+#[test]
+fn a_base_named_twice_differently_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let (plain, out) = (dir.path().join("p.csv"), dir.path().join("o.csv"));
+    let gen = [
+        "generate",
+        "--seq",
+        "faure:base=3",
+        "--dims",
+        "2",
+        "--n",
+        "9",
+        "-o",
+    ];
+    assert_eq!(run(&[&gen[..], &[path(&plain)]].concat()).0, 0);
+    for (request, flag) in [("owen-oracle:base=5", "3"), ("owen-oracle:base=3", "5")] {
+        let (code, _, err) = run(&[
+            "scramble",
+            path(&plain),
+            "--scramble",
+            request,
+            "--scramble-base",
+            flag,
+            "-o",
+            path(&out),
+        ]);
+        assert_eq!(code, 2, "{err}");
+        assert!(
+            err.contains(&format!("--scramble-base {flag} conflicts with {request}")),
+            "{err}"
+        );
+        assert!(!out.exists());
+    }
+    let (code, _, err) = run(&[
+        "scramble",
+        path(&plain),
+        "--scramble",
+        "owen-oracle:base=3",
+        "--scramble-base",
+        "3",
+        "-o",
+        path(&out),
+    ]);
+    assert_eq!(code, 0, "{err}");
 }

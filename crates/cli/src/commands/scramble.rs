@@ -5,7 +5,7 @@ use crate::input::{read_points, read_points_typed, FloatWords, InputFormat};
 use crate::output::write_atomically;
 use crate::CliError;
 use clap::Args;
-use gartowen::core::{Radix, RadixLayout, Width};
+use gartowen::core::{Radix, RadixLayout};
 use gartowen::radix_points;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -49,6 +49,11 @@ pub struct ScrambleArgs {
     /// index every point, ⌈log_b N⌉ (the digits of the first N points of a base-b sequence).
     #[arg(long)]
     pub digits: Option<u32>,
+    /// In a base that is not a power of two: the width of the digit words float values are
+    /// read into, 32 or 64 (default 32, as `generate`'s): m digits with b^m ≤ 2^bits, every
+    /// one scrambled, so the output equals `generate --bits B --scramble …` of the same points.
+    #[arg(long)]
+    pub bits: Option<u32>,
     /// Output format (default: by -o's extension, else the input's).
     #[arg(long, value_enum)]
     pub format: Option<PointFormat>,
@@ -84,10 +89,10 @@ pub fn run(a: ScrambleArgs) -> Result<ExitCode, CliError> {
     if let Some(radix) = radix_points::radix_of_request(&a.scramble, a.scramble_base)? {
         return run_in_radix(&a, radix, format);
     }
-    if a.digits.is_some() {
+    if a.digits.is_some() || a.bits.is_some() {
         return Err(CliError::Usage(
-            "--digits applies to bases that are not powers of two (floats hold base-2^q \
-             digits exactly)"
+            "--digits and --bits apply to bases that are not powers of two (floats hold \
+             base-2^q digits exactly, and words keep the file's width)"
                 .into(),
         ));
     }
@@ -127,8 +132,15 @@ pub fn run(a: ScrambleArgs) -> Result<ExitCode, CliError> {
 fn run_in_radix(a: &ScrambleArgs, radix: Radix, format: PointFormat) -> Result<ExitCode, CliError> {
     let scrambler = radix_points::radix_scrambler(&a.scramble, radix, a.seed)?;
     let (points, floats) = read_points_typed(&a.file, a.input_format, FloatWords::Exact)?;
+    let width = gartowen::generate::width_from_bits(a.bits.unwrap_or(32))
+        .map_err(|e| CliError::Usage(format!("--bits: {e}")))?;
     let mut digits = if floats {
-        radix_points::from_floats(&points, RadixLayout::new(Width::W64, radix)?, a.digits)?
+        radix_points::from_floats(&points, RadixLayout::new(width, radix)?, a.digits)?
+    } else if a.bits.is_some() {
+        return Err(CliError::Usage(format!(
+            "--bits reads float values; the words of {} keep their own width",
+            a.file.display()
+        )));
     } else if a.digits.is_some() {
         return Err(CliError::Usage(format!(
             "--digits reads float values; the words of {} are base-{} digit integers already",
