@@ -122,11 +122,12 @@ fn scramble<'py>(
     let (n, dims, element) = (input.n, input.dims, input.element);
     // What the scramble allocates besides the words read: a column and the output array in
     // the binary path; the digit columns, their snapped copy and the rows in base b.
-    let words_needed = if gartowen::generate::radix_of_request(name, base).is_ok_and(|r| r.is_some()) {
-        n.saturating_mul(dims).saturating_mul(4)
-    } else {
-        n.saturating_add(n.saturating_mul(dims))
-    };
+    let words_needed =
+        if gartowen::generate::radix_of_request(name, base).is_ok_and(|r| r.is_some()) {
+            n.saturating_mul(dims).saturating_mul(4)
+        } else {
+            n.saturating_add(n.saturating_mul(dims))
+        };
     arrays::ensure_room(words_needed.saturating_mul(8), "scrambling the points")?;
     let mut flat = input.words;
     let radix = gartowen::generate::radix_of_request(name, base).map_err(value_error)?;

@@ -13,9 +13,11 @@ use std::sync::Mutex;
 
 static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
 
-/// Starts the watcher (once, at start-up). Without signal support the command still runs;
-/// only the cleanup is lost.
+/// Starts the watcher (once, at start-up), and adopts the orphans of the external programs
+/// this command starts (see `gartowen::external::orphans`). Without signal support the
+/// command still runs; only the cleanup is lost.
 pub fn install() {
+    gartowen::external::orphans::adopt_orphans();
     let Ok(mut signals) = Signals::new([SIGINT, SIGTERM, SIGHUP]) else {
         return;
     };
@@ -33,6 +35,7 @@ pub fn install() {
 /// signal path).
 fn remove_pending() {
     gartowen::external::kill_live_groups();
+    end_adopted();
     let mut pending = PENDING.lock().unwrap_or_else(|e| e.into_inner());
     for path in pending.drain(..) {
         if path.is_dir() {
@@ -41,6 +44,13 @@ fn remove_pending() {
             let _ = std::fs::remove_file(path);
         }
     }
+}
+
+/// Kills and reaps whatever this process still has as children: at the end of a command the
+/// external programs it started are ended, so these are descendants that escaped their
+/// process group and pipes (a double fork into a new session). Nothing is left running.
+pub fn end_adopted() {
+    gartowen::external::orphans::kill_children(8);
 }
 
 /// Registers a temporary file (or a staging folder, removed with its contents) being written.

@@ -57,6 +57,7 @@ fn main() -> ExitCode {
         Command::Certificate(a) => commands::certificate::run(a),
         Command::Scene(a) => commands::scene::run(a),
     };
+    cleanup::end_adopted();
     match result {
         Ok(code) => code,
         Err(e) => {

@@ -45,6 +45,7 @@
 pub mod adapter;
 mod deadline_write;
 pub mod error;
+pub mod orphans;
 pub mod pipe_holders;
 pub mod pool;
 pub mod process;
