@@ -2,7 +2,8 @@
 # Checks, within seconds and before anything is built, what the test command and the main job
 # need: cargo, a C compiler (the external examples), python3 ≥ 3.9 with venv, and for the
 # proofs coqc with Flocq and ocamlopt. As root on Debian/Ubuntu it installs what is missing
-# with apt-get; otherwise (or with GARTOWEN_NO_INSTALL=1) it stops with the exact install line.
+# and required (saying so first) with apt-get; otherwise (or with GARTOWEN_NO_INSTALL=1) it
+# stops with the exact install line.
 # GARTOWEN_SKIP_PROOFS=1 leaves out the Coq and OCaml tools (the proofs then say loudly that
 # they were not checked); GARTOWEN_SKIP_PYTHON=1 leaves out Python (the main job needs none).
 set -uo pipefail
@@ -34,20 +35,16 @@ if [ "${GARTOWEN_SKIP_PROOFS:-0}" != 1 ] && ls proofs/*.v >/dev/null 2>&1; then
   fi
   have ocamlopt || missing+=(ocaml-nox)
 fi
-# GNU parallel drives examples/ci/shard-local.sh, which falls back to xargs -P without it:
-# installed when we can, never required.
-optional=()
-have parallel || optional+=(parallel)
-
-[ ${#missing[@]} -eq 0 ] && [ ${#optional[@]} -eq 0 ] && exit 0
-line="apt-get install -y ${missing[*]} ${optional[*]}"
+# Only what is missing and required is installed, and the script says so first: nothing
+# optional (GNU parallel, which examples/ci/shard-local.sh uses when present, falls back to
+# xargs -P), nothing for the parts a command skips. GARTOWEN_NO_INSTALL=1 never installs.
+[ ${#missing[@]} -eq 0 ] && exit 0
+line="apt-get install -y ${missing[*]}"
 if [ "${GARTOWEN_NO_INSTALL:-0}" != 1 ] && [ "$(id -u)" = 0 ] && have apt-get; then
-  echo "prerequisites: installing ${missing[*]} ${optional[*]}"
+  echo "prerequisites: ${missing[*]} missing and required; installing them as root with" \
+    "'$line' (GARTOWEN_NO_INSTALL=1 stops instead)"
   apt-get update -qq && DEBIAN_FRONTEND=noninteractive $line -qq && exit 0
   echo "prerequisites: apt-get failed" >&2
-fi
-if [ ${#missing[@]} -eq 0 ]; then
-  exit 0
 fi
 echo "prerequisites: missing ${missing[*]}. Install them first (Debian/Ubuntu):" >&2
 echo "    sudo $line" >&2

@@ -76,3 +76,69 @@ fn a_missing_coqc_stops_the_check_in_seconds_with_the_install_line() {
         String::from_utf8_lossy(&out.stderr)
     );
 }
+
+/// The main job's check installs nothing it does not need (issue 59: as root it once ran
+/// `apt-get install parallel`, pulling sysstat and its timers): with cc present and GNU
+/// parallel absent, a recording `apt-get` is never called; with cc absent it is called for gcc
+/// alone, and the script says so before it does.
+#[test]
+fn only_what_is_missing_and_required_is_installed_and_announced() {
+    let is_root = Command::new("id")
+        .arg("-u")
+        .output()
+        .is_ok_and(|o| String::from_utf8_lossy(&o.stdout).trim() == "0");
+    if !is_root {
+        eprintln!("skipped: installing is tried as root only");
+        return;
+    }
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("scripts/prerequisites.sh");
+    for with_cc in [true, false] {
+        let dir = tempfile::tempdir().unwrap();
+        let bin = dir.path().join("bin");
+        std::fs::create_dir(&bin).unwrap();
+        let mut tools = vec!["bash", "dirname", "ls", "mktemp", "rm", "id", "cargo"];
+        if with_cc {
+            tools.push("cc");
+        }
+        for tool in tools {
+            if let Some(p) = find(tool) {
+                std::os::unix::fs::symlink(p, bin.join(tool)).unwrap();
+            }
+        }
+        let log = dir.path().join("apt.log");
+        let fake = bin.join("apt-get");
+        std::fs::write(
+            &fake,
+            format!(
+                "#!{}\necho \"$*\" >> {}\n",
+                find("bash").unwrap().display(),
+                log.display()
+            ),
+        )
+        .unwrap();
+        use std::os::unix::fs::PermissionsExt;
+        std::fs::set_permissions(&fake, std::fs::Permissions::from_mode(0o755)).unwrap();
+        let out = Command::new(find("bash").unwrap())
+            .arg(&script)
+            .env("PATH", &bin)
+            .env("GARTOWEN_SKIP_PROOFS", "1")
+            .env("GARTOWEN_SKIP_PYTHON", "1")
+            .env_remove("GARTOWEN_NO_INSTALL")
+            .output()
+            .unwrap();
+        let text = String::from_utf8_lossy(&out.stdout).to_string()
+            + &String::from_utf8_lossy(&out.stderr);
+        let calls = std::fs::read_to_string(&log).unwrap_or_default();
+        if with_cc {
+            assert_eq!(out.status.code(), Some(0), "{text}");
+            assert_eq!(calls, "", "apt-get called with cc present: {text}");
+        } else {
+            assert!(calls.contains("install -y gcc"), "{calls}");
+            assert!(!calls.contains("parallel"), "{calls}");
+            assert!(
+                text.contains("gcc missing and required; installing"),
+                "{text}"
+            );
+        }
+    }
+}
