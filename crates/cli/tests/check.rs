@@ -448,3 +448,39 @@ fn an_endless_stream_is_refused_at_the_stream_budget() {
         "{err}"
     );
 }
+
+/// Where a limit on threads is lower than `--threads` (here `ulimit -u 64` for an unprivileged
+/// user), the refusal says so and what to do, with exit 2 (before: "os error 11" alone). Runs
+/// where it can drop to user nobody (as root, with setpriv).
+#[test]
+fn threads_the_system_refuses_are_explained() {
+    let root = Command::new("id")
+        .arg("-u")
+        .output()
+        .is_ok_and(|o| String::from_utf8_lossy(&o.stdout).trim() == "0");
+    if !root || Command::new("setpriv").arg("--help").output().is_err() {
+        eprintln!("skipped: needs root and setpriv to run under another user's ulimit");
+        return;
+    }
+    // A folder user nobody can read, with the binary and a point set in it.
+    let dir = tempfile::tempdir().unwrap();
+    use std::os::unix::fs::PermissionsExt;
+    std::fs::set_permissions(dir.path(), std::fs::Permissions::from_mode(0o755)).unwrap();
+    let points = generate(dir.path(), "p.npy", &["--seq", "sobol", "--dims", "2", "--log2-n", "6"]);
+    let binary = dir.path().join("gartowen");
+    std::fs::copy(env!("CARGO_BIN_EXE_gartowen"), &binary).unwrap();
+    for f in [&binary, &std::path::PathBuf::from(&points)] {
+        std::fs::set_permissions(f, std::fs::Permissions::from_mode(0o755)).unwrap();
+    }
+    let o = Command::new("setpriv")
+        .args(["--reuid", "65534", "--regid", "65534", "--clear-groups", "bash", "-c"])
+        .arg(format!(
+            "ulimit -u 64; exec {} check {points} --base 2 --threads 1024",
+            binary.display()
+        ))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("--threads 1024: the system refused") && err.contains("ulimit -u"), "{err}");
+}

@@ -124,7 +124,13 @@ pub fn run(a: CheckArgs) -> Result<ExitCode, CliError> {
         rayon::ThreadPoolBuilder::new()
             .num_threads(n.max(1))
             .build_global()
-            .map_err(usage)?;
+            .map_err(|e| {
+                CliError::Usage(format!(
+                    "--threads {n}: the system refused to start {n} threads ({e}); a limit \
+                     on processes or threads (ulimit -u, a container's pids.max) is lower: \
+                     ask for fewer, or leave --threads out to use one per core"
+                ))
+            })?;
     }
     let base = CheckBase::new(a.base).map_err(usage)?;
     let (read, floats) = read_points_typed(&a.file, a.format, FloatWords::Floor)?;

@@ -111,7 +111,9 @@ pub struct VerifyArgs {
     /// the sampled levels (without --dims) check them.
     #[arg(long, conflicts_with_all = ["merge", "expect"])]
     pub dims: Option<String>,
-    /// Scrambling base of the external program (a power of two, 2..=256).
+    /// Scrambling base of the external program: a power of two 2..=256 (protocol version 1,
+    /// digits in the word's bits), or any other base 3..=65535 (version 2, words are base-b
+    /// digit integers below b^m; flip-rank then does not apply).
     #[arg(long, default_value_t = 2, requires = "program")]
     pub base: u64,
     /// Word width the external program receives: 32 or 64.
