@@ -466,14 +466,26 @@ fn threads_the_system_refuses_are_explained() {
     let dir = tempfile::tempdir().unwrap();
     use std::os::unix::fs::PermissionsExt;
     std::fs::set_permissions(dir.path(), std::fs::Permissions::from_mode(0o755)).unwrap();
-    let points = generate(dir.path(), "p.npy", &["--seq", "sobol", "--dims", "2", "--log2-n", "6"]);
+    let points = generate(
+        dir.path(),
+        "p.npy",
+        &["--seq", "sobol", "--dims", "2", "--log2-n", "6"],
+    );
     let binary = dir.path().join("gartowen");
     std::fs::copy(env!("CARGO_BIN_EXE_gartowen"), &binary).unwrap();
     for f in [&binary, &std::path::PathBuf::from(&points)] {
         std::fs::set_permissions(f, std::fs::Permissions::from_mode(0o755)).unwrap();
     }
     let o = Command::new("setpriv")
-        .args(["--reuid", "65534", "--regid", "65534", "--clear-groups", "bash", "-c"])
+        .args([
+            "--reuid",
+            "65534",
+            "--regid",
+            "65534",
+            "--clear-groups",
+            "bash",
+            "-c",
+        ])
         .arg(format!(
             "ulimit -u 64; exec {} check {points} --base 2 --threads 1024",
             binary.display()
@@ -482,5 +494,8 @@ fn threads_the_system_refuses_are_explained() {
         .unwrap();
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{err}");
-    assert!(err.contains("--threads 1024: the system refused") && err.contains("ulimit -u"), "{err}");
+    assert!(
+        err.contains("--threads 1024: the system refused") && err.contains("ulimit -u"),
+        "{err}"
+    );
 }

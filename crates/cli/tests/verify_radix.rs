@@ -191,7 +191,10 @@ fn a_reply_word_at_b_to_the_m_is_named_as_garbage() {
     // The program's failure fails the checks that asked it, not flip-rank, which does not
     // apply in base 3 (before, it was shown as FAIL with the program's failure).
     assert!(!text.contains("FAIL flip-rank"), "{text}");
-    assert!(text.contains("flip-rank: not run: not applicable in base 3"), "{text}");
+    assert!(
+        text.contains("flip-rank: not run: not applicable in base 3"),
+        "{text}"
+    );
 }
 
 /// `--list-requests` counts what a version 2 run sends: a program counting the request
@@ -214,14 +217,32 @@ fn the_request_table_counts_what_a_base_b_run_sends() {
     for (base, width) in [("3", "32"), ("5", "64")] {
         let counts = dir.path().join(format!("counts-{base}-{width}"));
         let o = std::process::Command::new(env!("CARGO_BIN_EXE_gartowen"))
-            .args(["verify", "--external", program.to_str().unwrap(), "--base", base])
+            .args([
+                "verify",
+                "--external",
+                program.to_str().unwrap(),
+                "--base",
+                base,
+            ])
             .args(["--width", width])
             .env("COUNT_FILE", &counts)
             .output()
             .unwrap();
-        assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&o.stderr)
+        );
         let sent = std::fs::read_to_string(&counts).unwrap();
-        let listed = gartowen(&["verify", "--list-requests", "--base", base, "--width", width]);
+        let listed = gartowen(&[
+            "verify",
+            "--list-requests",
+            "--base",
+            base,
+            "--width",
+            width,
+        ]);
         let table = String::from_utf8_lossy(&listed.stdout).to_string();
         let row = table
             .lines()
@@ -240,6 +261,9 @@ fn the_request_table_counts_what_a_base_b_run_sends() {
 fn verify_help_names_the_bases_beyond_powers_of_two() {
     let o = gartowen(&["verify", "--help"]);
     let help = String::from_utf8_lossy(&o.stdout);
-    assert!(help.contains("3..=65535") && help.contains("version 2"), "{help}");
+    assert!(
+        help.contains("3..=65535") && help.contains("version 2"),
+        "{help}"
+    );
     assert!(!help.contains("(a power of two, 2..=256)"), "{help}");
 }
