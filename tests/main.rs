@@ -20,6 +20,7 @@ mod randomization_quality;
 mod request_table;
 mod scrambled_nets;
 mod shared_requests;
+mod slurm_scripts;
 mod theorems;
 mod verify;
 mod word_sweep;

@@ -26,6 +26,9 @@ command -v sbatch >/dev/null || { echo "submit.sh: sbatch not found: is this a S
 # submit_pair TASKS NAME ARRAY_SCRIPT JOIN_SCRIPT JOIN_LOG ARRAY_ARGS... -- JOIN_ARGS...:
 # the array of TASKS tasks (logs OUT/logs/NAME-K.out), then the joining job after every task
 # has ended; the exit code is sbatch's (with --wait, the joining job's).
+# A path as a Slurm --output pattern: a literal % is written %%, so that an OUT with % in
+# its name is not read as a pattern (%j, %a, …).
+pattern() { printf '%s' "${1//%/%%}"; }
 submit_pair() {
   local tasks="$1" name="$2" array_script="$3" join_script="$4" join_log="$5"
   shift 5
@@ -34,12 +37,12 @@ submit_pair() {
   shift
   local array
   array=$(sbatch --parsable --array="1-$tasks" ${GARTOWEN_ARRAY_OPTS:-} \
-    --output="$out/logs/$name-%a.out" "$here/$array_script" "${array_args[@]}") ||
+    --output="$(pattern "$out/logs/$name")-%a.out" "$here/$array_script" "${array_args[@]}") ||
     { echo "submit.sh: sbatch did not take the array (its message is above)" >&2; return 2; }
   array="${array%%;*}"
   echo "array $array: $tasks $name task(s); $join_script after it:" >&2
   sbatch --parsable "${wait[@]}" --dependency="afterany:$array" --kill-on-invalid-dep=yes \
-    --output="$out/logs/$join_log" "$here/$join_script" "$@"
+    --output="$(pattern "$out/logs/$join_log")" "$here/$join_script" "$@"
 }
 
 case "$kind" in
