@@ -6,7 +6,9 @@ use std::path::Path;
 use std::process::Command;
 
 fn slurm(script: &str) -> std::path::PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/slurm").join(script)
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("examples/slurm")
+        .join(script)
 }
 
 /// An empty or garbled exit-code file is no verdict: the summary names it and exits 2
@@ -32,9 +34,14 @@ fn check_summary_refuses_empty_and_garbled_exit_codes() {
             .arg(dir.path())
             .output()
             .unwrap();
-        let text = String::from_utf8_lossy(&o.stdout).to_string() + &String::from_utf8_lossy(&o.stderr);
+        let text =
+            String::from_utf8_lossy(&o.stdout).to_string() + &String::from_utf8_lossy(&o.stderr);
         assert_eq!(o.status.code(), Some(want), "{codes:?}: {text}");
-        assert_eq!(want == 2, text.contains("unreadable exit code"), "{codes:?}: {text}");
+        assert_eq!(
+            want == 2,
+            text.contains("unreadable exit code"),
+            "{codes:?}: {text}"
+        );
     }
 }
 
@@ -67,10 +74,19 @@ fn submit_escapes_percent_signs_in_out() {
         .env("PATH", path)
         .output()
         .unwrap();
-    assert_eq!(o.status.code(), Some(0), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
     // Slurm's expansion: %% is a literal %, %a the task id (here 7); any other % pattern
     // would change the path.
-    let expand = |p: &str| p.replace("%%", "\u{0}").replace("%a", "7").replace('\u{0}', "%");
+    let expand = |p: &str| {
+        p.replace("%%", "\u{0}")
+            .replace("%a", "7")
+            .replace('\u{0}', "%")
+    };
     let logs: Vec<String> = std::fs::read_to_string(&record)
         .unwrap()
         .lines()
@@ -79,6 +95,9 @@ fn submit_escapes_percent_signs_in_out() {
     let out = out.to_str().unwrap();
     assert_eq!(
         logs,
-        [format!("{out}/logs/verify-7.out"), format!("{out}/logs/merge.out")]
+        [
+            format!("{out}/logs/verify-7.out"),
+            format!("{out}/logs/merge.out")
+        ]
     );
 }

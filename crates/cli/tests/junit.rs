@@ -146,3 +146,37 @@ fn check_and_inspect_write_junit() {
     assert_eq!(c.len(), 1);
     assert!(c[0].1.starts_with("nested in base 2") && c[0].2);
 }
+
+/// A program that fails (here `false`, which exits at once) or is no function still gets its
+/// JUnit file, with one failing testcase saying why (before: exit 3 and no file at all).
+#[test]
+fn inspect_writes_junit_when_the_external_program_fails() {
+    let dir = tempfile::tempdir().unwrap();
+    for base in ["2", "3"] {
+        let xml = dir.path().join(format!("inspect-{base}.xml"));
+        let o = gartowen(&[
+            "inspect",
+            "--external",
+            "false",
+            "--base",
+            base,
+            "--junit",
+            xml.to_str().unwrap(),
+        ]);
+        assert_eq!(
+            o.status.code(),
+            Some(3),
+            "{}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        let text = std::fs::read_to_string(&xml).expect("the JUnit file is written");
+        let all = cases(&text);
+        assert_eq!(all.len(), 1, "{text}");
+        assert_eq!(
+            (all[0].1.as_str(), all[0].2),
+            ("external program", true),
+            "{text}"
+        );
+        assert!(text.contains("exited with status 1"), "{text}");
+    }
+}

@@ -206,7 +206,7 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
         c.probe = with_seed(a.seed).map_err(CliError::Usage)?;
         let outcome = (check.run)(&c, Level::Quick.plan());
         if let Some(e) = process.as_ref().and_then(|p| p.failure()) {
-            return Err(CliError::External(e.to_string()));
+            return Err(external_stop(&a, &s.name(), e));
         }
         if outcome.verdict == gartowen::verify::Verdict::Fail {
             if a.json {
@@ -222,6 +222,7 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
             } else {
                 crate::outln!("{}: FAIL function: {}", s.name(), outcome.detail);
             }
+            junit_stopped(&a, &s.name(), "function", &outcome.detail)?;
             return Ok(ExitCode::from(1));
         }
     }
@@ -237,7 +238,7 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
     };
     let external_failure = || process.as_ref().and_then(|p| p.failure());
     if let Some(e) = external_failure() {
-        return Err(CliError::External(e.to_string()));
+        return Err(external_stop(&a, &s.name(), e));
     }
     let laws = if a.laws {
         // External programs report the claim given (default owen); registry entries their own.
@@ -247,7 +248,7 @@ pub fn run(a: InspectArgs) -> Result<ExitCode, CliError> {
         c.probe = probe;
         let families = run_laws(&c, Level::Quick, 0).map_err(|e| CliError::Usage(e.to_string()))?;
         if let Some(e) = external_failure() {
-            return Err(CliError::External(e.to_string()));
+            return Err(external_stop(&a, &s.name(), e));
         }
         Some((claim, judge_families(families, claim, 1, 0.0)))
     } else {
@@ -342,6 +343,45 @@ pub(super) struct Nested<'a> {
     pub violation: Option<(&'a Violation, String, String)>,
     pub evaluations: u64,
     pub nodes: u64,
+}
+
+/// Ends a run that stopped before its verdicts (the program failed, or is not a function):
+/// with `--junit`, one failing testcase named `case` says why, so that a CI reading the file
+/// sees the failure instead of a missing file. Returns the error to exit with, if any.
+pub(super) fn junit_stopped(
+    a: &InspectArgs,
+    name: &str,
+    case: &str,
+    why: &str,
+) -> Result<(), CliError> {
+    let Some(path) = &a.junit else {
+        return Ok(());
+    };
+    use gartowen::battery::junit::{JunitCase, JunitSuite};
+    let suite = JunitSuite {
+        name: name.to_string(),
+        cases: vec![JunitCase {
+            name: case.to_string(),
+            failure: Some((
+                why.lines().next().unwrap_or(why).to_string(),
+                why.to_string(),
+            )),
+            skipped: false,
+            output: String::new(),
+            seconds: 0.0,
+        }],
+        certificate: None,
+    };
+    crate::output::write_junit(path, "gartowen inspect", &[suite])
+}
+
+/// The error an external program's failure `e` ends the run with, its JUnit written first.
+pub(super) fn external_stop(a: &InspectArgs, name: &str, e: impl std::fmt::Display) -> CliError {
+    let why = format!("external program failed: {e}");
+    match junit_stopped(a, name, "external program", &why) {
+        Ok(()) => CliError::External(e.to_string()),
+        Err(w) => w,
+    }
 }
 
 /// Writes `--junit`: a testcase for nestedness and one per law check.

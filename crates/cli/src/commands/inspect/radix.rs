@@ -53,10 +53,11 @@ pub fn run(a: &InspectArgs, radix: Radix) -> Result<ExitCode, CliError> {
             .expect("the function check is declared");
         let outcome = (check.run)(&candidate, Level::Quick.plan());
         if let Some(e) = external_failure() {
-            return Err(CliError::External(e.to_string()));
+            return Err(super::external_stop(a, &candidate.name, e));
         }
         if outcome.verdict == gartowen::verify::Verdict::Fail {
             crate::outln!("{}: FAIL function: {}", candidate.name, outcome.detail);
+            super::junit_stopped(a, &candidate.name, "function", &outcome.detail)?;
             return Ok(ExitCode::from(1));
         }
     }
@@ -64,7 +65,7 @@ pub fn run(a: &InspectArgs, radix: Radix) -> Result<ExitCode, CliError> {
     let batch = |words: &mut [u64]| probe.scramble_batch(words, width, a.dim);
     let report = inspect_radix_probes(&batch, layout, a.probes, a.probe_seed);
     if let Some(e) = external_failure() {
-        return Err(CliError::External(e.to_string()));
+        return Err(super::external_stop(a, &candidate.name, e));
     }
     let laws = if a.laws {
         let claim = match given_claim {
@@ -75,7 +76,7 @@ pub fn run(a: &InspectArgs, radix: Radix) -> Result<ExitCode, CliError> {
         let families =
             run_laws(&candidate, Level::Quick, 0).map_err(|e| CliError::Usage(e.to_string()))?;
         if let Some(e) = external_failure() {
-            return Err(CliError::External(e.to_string()));
+            return Err(super::external_stop(a, &candidate.name, e));
         }
         Some((claim, judge_families(families, claim, 1, 0.0)))
     } else {
