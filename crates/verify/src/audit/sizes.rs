@@ -14,7 +14,7 @@ const PER_SEED_FAMILIES: [&str; 3] = ["node-law", "pair-law", "pair-lemma"];
 /// depth; names `parameters.level` when they disagree.
 pub(super) fn sizes_match_level(reports: &[ImplReport], level: Level) -> Result<(), AuditError> {
     let plan = level.plan();
-    let seeds = plan.law_seeds as u64;
+    let seeds = plan.law_seeds;
     for (k, r) in reports.iter().enumerate() {
         for (i, c) in r.checks.iter().enumerate() {
             if !PER_SEED_FAMILIES.contains(&c.check.as_str())
@@ -60,5 +60,5 @@ pub(super) fn sizes_match_level(reports: &[ImplReport], level: Level) -> Result<
 fn level_of_seeds(n: u64) -> Option<Level> {
     Level::ALL
         .into_iter()
-        .find(|l| l.plan().law_seeds as u64 == n)
+        .find(|l| l.plan().law_seeds == n)
 }
