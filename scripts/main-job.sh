@@ -41,7 +41,7 @@ if command -v cc >/dev/null; then
   expect_fail $g verify --external "$out/lk_hash improved" --base 2
 fi
 
-$g generate --seq sz16 --dims 16 --log2-n 12 --scramble owen-oracle --seed 1 --format npy -o "$out/sz16_owen.npy"
+$g generate --seq sz16 --dims 16 --log2-n 12 --scramble owen-oracle:base=16 --seed 1 --format npy -o "$out/sz16_owen.npy"
 $g check "$out/sz16_owen.npy" --base 16 --t 0 --json > "$out/check_sz16_owen.json"
 $g check "$out/sz16_owen.npy" --base 16 --t 0
 $g inspect --scramble owen-oracle --base 16 --width 16 --seed 1

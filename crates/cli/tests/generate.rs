@@ -463,3 +463,42 @@ fn rows_across_many_blocks_at_thousands_of_dimensions_equal_the_rows_of_one_bloc
         assert_eq!(first3(&wide), first3(&run("3")), "{extra:?}");
     }
 }
+
+/// A scrambler whose base is a parameter, on a sequence of base 16 with no base asked for,
+/// scrambles in base 16 and says so on stderr, naming how to ask for binary Owen; `:base=2`
+/// gives binary Owen, the same points as `--scramble-base 2` (issue 58, item 5).
+#[test]
+fn a_base_taken_from_the_sequence_is_named_and_base_2_can_be_asked_for() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = |n: &str| dir.path().join(n).to_str().unwrap().to_string();
+    let gen = |scramble: &[&str], file: &str| {
+        let mut args = vec!["generate", "--seq", "sz16", "--dims", "2", "--log2-n", "8"];
+        args.extend_from_slice(scramble);
+        let path = out(file);
+        args.extend(["-o", &path]);
+        let o = crate::support::gartowen(&args);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        (
+            String::from_utf8_lossy(&o.stderr).to_string(),
+            std::fs::read(path).unwrap(),
+        )
+    };
+    let (note, base16) = gen(&["--scramble", "owen-oracle"], "a.hex");
+    assert!(
+        note.contains("scrambles in base 16") && note.contains("owen-oracle:base=2"),
+        "{note}"
+    );
+    let (quiet, explicit16) = gen(&["--scramble", "owen-oracle:base=16"], "b.hex");
+    assert_eq!(quiet, "");
+    assert_eq!(base16, explicit16);
+    let (quiet, binary) = gen(&["--scramble", "owen-oracle:base=2"], "c.hex");
+    assert_eq!(quiet, "");
+    let (_, flag) = gen(
+        &["--scramble", "owen-oracle", "--scramble-base", "2"],
+        "d.hex",
+    );
+    assert_eq!(binary, flag);
+    assert_ne!(binary, base16);
+    // A scrambler of a fixed base has nothing to say.
+    assert_eq!(gen(&["--scramble", "art-owen-16p"], "e.hex").0, "");
+}

@@ -30,6 +30,7 @@
 
 use super::lanes::{PrefixMemo, Word};
 use super::{ArtOwen, Step, LANES};
+use crate::dims::DimKey;
 use gartowen_core::Width;
 use std::sync::atomic::{AtomicU64, Ordering};
 
@@ -335,7 +336,7 @@ impl ArtOwen {
 
     /// Forward scramble of `words` in place for dimension `dim`, equal to
     /// [`gartowen_core::Scrambler::scramble`] on each word.
-    pub(super) fn forward_batch<T: Word>(&self, words: &mut [T], width: Width, dim: u32) {
+    pub(super) fn forward_batch<T: Word>(&self, words: &mut [T], width: Width, key: DimKey) {
         debug_assert!(T::WIDE || width == Width::W32, "u32 words are 32 bits");
         // The step width as a constant, so the step's shifts are immediates.
         let packed = if width.bits() <= 32 {
@@ -345,24 +346,24 @@ impl ArtOwen {
         };
         if let Some(t) = packed {
             match self.batch_step_bits() {
-                1 => self.batch_lanes::<1, true, T>(t, words, width, dim),
-                2 => self.batch_lanes::<2, true, T>(t, words, width, dim),
-                3 => self.batch_lanes::<3, true, T>(t, words, width, dim),
-                4 => self.batch_lanes::<4, true, T>(t, words, width, dim),
-                5 => self.batch_lanes::<5, true, T>(t, words, width, dim),
-                6 => self.batch_lanes::<6, true, T>(t, words, width, dim),
-                7 => self.batch_lanes::<7, true, T>(t, words, width, dim),
-                8 => self.batch_lanes::<8, true, T>(t, words, width, dim),
+                1 => self.batch_lanes::<1, true, T>(t, words, width, key),
+                2 => self.batch_lanes::<2, true, T>(t, words, width, key),
+                3 => self.batch_lanes::<3, true, T>(t, words, width, key),
+                4 => self.batch_lanes::<4, true, T>(t, words, width, key),
+                5 => self.batch_lanes::<5, true, T>(t, words, width, key),
+                6 => self.batch_lanes::<6, true, T>(t, words, width, key),
+                7 => self.batch_lanes::<7, true, T>(t, words, width, key),
+                8 => self.batch_lanes::<8, true, T>(t, words, width, key),
                 _ => unreachable!("batch steps are 1 to 8 bits"),
             }
         } else {
             match self.q() * self.step_digits {
-                3 => self.batch_lanes::<3, false, T>(&NO_BATCH_TABLES, words, width, dim),
-                4 => self.batch_lanes::<4, false, T>(&NO_BATCH_TABLES, words, width, dim),
-                5 => self.batch_lanes::<5, false, T>(&NO_BATCH_TABLES, words, width, dim),
-                6 => self.batch_lanes::<6, false, T>(&NO_BATCH_TABLES, words, width, dim),
-                7 => self.batch_lanes::<7, false, T>(&NO_BATCH_TABLES, words, width, dim),
-                8 => self.batch_lanes::<8, false, T>(&NO_BATCH_TABLES, words, width, dim),
+                3 => self.batch_lanes::<3, false, T>(&NO_BATCH_TABLES, words, width, key),
+                4 => self.batch_lanes::<4, false, T>(&NO_BATCH_TABLES, words, width, key),
+                5 => self.batch_lanes::<5, false, T>(&NO_BATCH_TABLES, words, width, key),
+                6 => self.batch_lanes::<6, false, T>(&NO_BATCH_TABLES, words, width, key),
+                7 => self.batch_lanes::<7, false, T>(&NO_BATCH_TABLES, words, width, key),
+                8 => self.batch_lanes::<8, false, T>(&NO_BATCH_TABLES, words, width, key),
                 _ => unreachable!("scalar steps are 3 to 8 bits"),
             }
         }
@@ -374,9 +375,9 @@ impl ArtOwen {
         t: &BatchTables,
         words: &mut [T],
         width: Width,
-        dim: u32,
+        key: DimKey,
     ) {
-        let (root, a, d) = self.keys_at(dim, width);
+        let (root, a, d) = ArtOwen::shifts_at(key, width);
         let w = width.bits();
         let steps = w / SB;
         let mut memo = PrefixMemo::new();

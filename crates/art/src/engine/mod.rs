@@ -430,9 +430,44 @@ impl ArtOwen {
     /// Root symbol, input shift and output shift of dimension `dim` for `width`-bit words.
     #[inline(always)]
     fn keys_at(&self, dim: u32, width: Width) -> (u32, u64, u64) {
-        let k = self.dim_key(dim);
+        Self::shifts_at(self.dim_key(dim), width)
+    }
+
+    /// Root symbol, input shift and output shift of `key` for `width`-bit words.
+    #[inline(always)]
+    fn shifts_at(k: DimKey, width: Width) -> (u32, u64, u64) {
         let top = 64 - width.bits();
         (k.root, k.input_shift >> top, k.output_shift >> top)
+    }
+
+    /// Scrambles `words` of dimension `dim` in place with this table keyed by `key_seed`: the
+    /// root symbol and both dimension shifts are those a table seeded `key_seed` would use,
+    /// the per-symbol tables stay this one's. So a renderer ships one table and keys each
+    /// render (or pixel) by a seed of its own; keyed by the table's own seed this is
+    /// [`Scrambler::scramble_batch`].
+    pub fn scramble_batch_keyed(&self, words: &mut [u64], width: Width, dim: u32, key_seed: u64) {
+        let key = (self.dimension_rule)(key_seed, dim, self.grammar.symbols());
+        self.forward_batch(words, width, key)
+    }
+
+    /// One word of [`ArtOwen::scramble_batch_keyed`], by the plain digit-by-digit loop (the
+    /// reference the batch path is tested against).
+    pub fn scramble_keyed_digit_by_digit(
+        &self,
+        x: u64,
+        width: Width,
+        dim: u32,
+        key_seed: u64,
+    ) -> u64 {
+        let key = (self.dimension_rule)(key_seed, dim, self.grammar.symbols());
+        let (root, a, d) = Self::shifts_at(key, width);
+        self.run_from(x ^ a, width, root, false) ^ d
+    }
+
+    /// The seed the tables were drawn from (the key [`ArtOwen::scramble_batch_keyed`] takes
+    /// to give the scramble itself).
+    pub fn seed(&self) -> u64 {
+        self.seed
     }
 
     #[inline]
@@ -562,11 +597,11 @@ impl Scrambler for ArtOwen {
 
     /// Interleaved chains through the step table (bit-identical to [`Scrambler::scramble`]).
     fn scramble_batch(&self, words: &mut [u64], width: Width, dim: u32) {
-        self.forward_batch(words, width, dim)
+        self.forward_batch(words, width, self.dim_key(dim))
     }
     /// The same lanes walked on the 32-bit words themselves (no widened copy).
     fn scramble_batch_u32(&self, words: &mut [u32], dim: u32) {
-        self.forward_batch(words, Width::W32, dim)
+        self.forward_batch(words, Width::W32, self.dim_key(dim))
     }
     fn inverse(&self) -> Option<&dyn Unscramble> {
         Some(self)

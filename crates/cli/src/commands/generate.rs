@@ -392,6 +392,36 @@ fn radix_points(a: &GenerateArgs, p: u64) -> Result<RadixPoints, CliError> {
     Ok(points)
 }
 
+/// What to say when the scrambler's base was taken from the sequence, not asked for: a
+/// scrambler whose base is a parameter, given neither `:base=` nor `--scramble-base`, on a
+/// sequence whose base is not 2 (`--seq sz16 --scramble owen-oracle` is base-16 Owen, which a
+/// user asking for "Owen" may not expect).
+fn default_base_note(a: &GenerateArgs, used: gartowen::core::PowerOfTwoBase) -> Option<String> {
+    if a.scramble == "none" || a.scramble_base.is_some() || used.base() == 2 {
+        return None;
+    }
+    let request = gartowen::core::registry::ScramblerRequest::parse(&a.scramble).ok()?;
+    if request.option("base").is_some() {
+        return None;
+    }
+    // A base that is a parameter: in base 2 when asked.
+    let ctx = gartowen::core::BuildContext {
+        seed: a.seed,
+        default_base: gartowen::core::PowerOfTwoBase::B2,
+    };
+    let binary = gartowen::registry().build_with(&a.scramble, &ctx).ok()?;
+    (binary.base().base() == 2).then(|| {
+        format!(
+            "{} scrambles in base {b}, the base of {}, as no base was asked for; binary \
+             (base-2) Owen is `--scramble {}:base=2` (or `--scramble-base 2`)",
+            a.scramble,
+            a.seq,
+            a.scramble,
+            b = used.base()
+        )
+    })
+}
+
 /// Runs `generate`.
 pub fn run(a: GenerateArgs) -> Result<ExitCode, CliError> {
     let format = a
@@ -413,6 +443,9 @@ pub fn run(a: GenerateArgs) -> Result<ExitCode, CliError> {
         return Ok(ExitCode::SUCCESS);
     }
     let p = plan(&a)?;
+    if let Some(note) = default_base_note(&a, p.scrambler.base()) {
+        eprintln!("note: {note}");
+    }
     let src = rows(&p, a.order);
     write_atomically(a.output.as_deref(), |out| match format {
         PointFormat::Npy => write_npy(&src, a.words, out),

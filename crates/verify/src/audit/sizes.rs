@@ -58,7 +58,5 @@ pub(super) fn sizes_match_level(reports: &[ImplReport], level: Level) -> Result<
 }
 
 fn level_of_seeds(n: u64) -> Option<Level> {
-    Level::ALL
-        .into_iter()
-        .find(|l| l.plan().law_seeds == n)
+    Level::ALL.into_iter().find(|l| l.plan().law_seeds == n)
 }
