@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Checks, within seconds and before anything is built, what the test command and the main job
-# need: cargo, a C compiler (the external examples), python3 ≥ 3.9 with venv, and for the
-# proofs coqc with Flocq and ocamlopt. As root on Debian/Ubuntu it installs what is missing
+# need: cargo, a C compiler (the external examples), python3 ≥ 3.9 with venv and libLLVM ≥ 16
+# (Mitsuba's LLVM variant, for the rendering tests), and for the proofs coqc with Flocq and
+# ocamlopt. As root on Debian/Ubuntu it installs what is missing
 # and required (saying so first) with apt-get; otherwise (or with GARTOWEN_NO_INSTALL=1) it
 # stops with the exact install line.
 # GARTOWEN_SKIP_PROOFS=1 leaves out the Coq and OCaml tools (the proofs then say loudly that
@@ -23,6 +24,15 @@ elif have python3 && python3 -c 'import sys; sys.exit(sys.version_info < (3, 9))
   python3 -c 'import venv, ensurepip' 2>/dev/null || missing+=(python3-venv)
 else
   missing+=(python3 python3-venv)
+fi
+# Mitsuba's LLVM variant (the rendering tests of the Python package) needs libLLVM ≥ 16.
+if [ "${GARTOWEN_SKIP_PYTHON:-0}" != 1 ] && [ -z "${DRJIT_LIBLLVM_PATH:-}" ]; then
+  llvm=no
+  for f in /usr/lib/*/libLLVM-1[6-9]*.so* /usr/lib/*/libLLVM.so.1[6-9]* \
+    /usr/lib/*/libLLVM-[2-9][0-9]*.so* /usr/lib/*/libLLVM.so.[2-9][0-9]*; do
+    [ -e "$f" ] && llvm=yes
+  done
+  [ "$llvm" = yes ] || missing+=(libllvm19)
 fi
 if [ "${GARTOWEN_SKIP_PROOFS:-0}" != 1 ] && ls proofs/*.v >/dev/null 2>&1; then
   if have coqc; then

@@ -14,7 +14,9 @@ if [ ! -x "$venv/bin/python" ]; then
   }
 fi
 export PATH="$PWD/$venv/bin:$PATH"
-python -m pip install -q --disable-pip-version-check "maturin>=1.9,<2" numpy scipy pytest
+# Mitsuba 3 for the rendering tests (gartowen.mitsuba, gartowen.render; libLLVM comes from
+# scripts/prerequisites.sh).
+python -m pip install -q --disable-pip-version-check "maturin>=1.9,<2" numpy scipy pytest "mitsuba>=3.5"
 python -m pip install -q --disable-pip-version-check --no-build-isolation ./python
 
 if [ -z "${GARTOWEN_BIN:-}" ]; then

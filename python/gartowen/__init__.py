@@ -44,6 +44,7 @@ __version__: str = _native.__version__
 __all__ = [
     "generate",
     "scramble",
+    "scramble_per_key",
     "check",
     "discrepancy",
     "verify",
@@ -198,6 +199,47 @@ def scramble(words_or_points: Any, name: str, seed: int, *, base: Optional[int] 
     base = _optional_integer("base", base)
     out = _native.scramble(array, name, seed, base)
     return out.reshape(array.shape)
+
+
+def scramble_per_key(
+    words: Any,
+    name: str,
+    keys: Any,
+    *,
+    table_seed: Optional[int] = None,
+    first_dim: int = 0,
+    base: Optional[int] = None,
+) -> np.ndarray:
+    """One point set scrambled once per key, as a renderer scrambles per pixel.
+
+    Args:
+        words: uint32 words (value word · 2^-32), shape (n, dims) or (n,).
+        name: registry scrambler ``NAME[:OPTION...]``.
+        keys: the keys (one per pixel, say), integers in [0, 2^64).
+        table_seed: with an ART variant: one table drawn from this seed serves every key,
+            each key choosing every dimension's root symbol and shifts (the fixed table a
+            renderer ships). Keyed by ``table_seed`` itself this is ``scramble(words, name,
+            table_seed)``. None: a fresh instance per key, ``scramble(words, name, key)``.
+        first_dim: the scramble dimension of column 0 (column j is ``first_dim + j``).
+        base: scrambling base for scramblers whose base is a parameter (default 2).
+
+    Returns:
+        A uint32 array of shape (len(keys), n, dims): ``out[k]`` is the set keyed by
+        ``keys[k]``.
+    """
+    array = _array(words, "words")
+    if array.dtype != np.uint32:
+        raise TypeError(f"words has dtype {array.dtype}: uint32 words, as generate(..., words=True)")
+    two_d = array.reshape(array.shape[0], -1)
+    # A uint64 array's tolist() gives Python ints; np.asarray of big ints would give floats.
+    raw = keys.reshape(-1).tolist() if isinstance(keys, np.ndarray) else list(keys)
+    key_list = [_integer("keys", k) for k in raw]
+    if not key_list:
+        raise ValueError("keys is empty")
+    table_seed = _optional_integer("table_seed", table_seed)
+    first_dim = _integer("first_dim", first_dim, 0, (1 << 32) - 1)
+    base = _optional_integer("base", base)
+    return _native.scramble_per_key(two_d, _string("name", name), key_list, table_seed, first_dim, base)
 
 
 @dataclass(frozen=True)

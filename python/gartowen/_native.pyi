@@ -11,6 +11,10 @@ def generate(
     words: bool, start: int, gray: bool,
 ) -> np.ndarray: ...
 def scramble(points: np.ndarray, name: str, seed: int, base: Optional[int]) -> np.ndarray: ...
+def scramble_per_key(
+    words: np.ndarray, name: str, keys: List[int], table_seed: Optional[int], first_dim: int,
+    base: Optional[int],
+) -> np.ndarray: ...
 def check(
     points: np.ndarray, base: int, m: Optional[int], t: Optional[int],
     projections: Optional[str], sequence: bool, histograms: bool,

@@ -3,6 +3,7 @@
 //! release the GIL for the Rust work and return arrays or the JSON documents the CLI prints.
 
 mod arrays;
+mod pixels;
 mod python_scrambler;
 
 use arrays::{read_points, to_array, Element};
@@ -522,6 +523,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(verify, m)?)?;
     m.add_function(wrap_pyfunction!(list_scramblers, m)?)?;
     m.add_function(wrap_pyfunction!(describe_box, m)?)?;
+    m.add_function(wrap_pyfunction!(pixels::scramble_per_key, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }
