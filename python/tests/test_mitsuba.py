@@ -97,7 +97,7 @@ def test_bad_render_arguments_exit_2_naming_them(tmp_path):
 def test_a_gartowen_render_agrees_with_mitsubas_independent_sampler_within_its_se():
     import gartowen.render as gr
     scene = gr.scenes(MI, quick=True)["cornell"]
-    reference = gr.reference(MI, "cornell", scene, 4096, None)
+    reference, _ = gr.reference(MI, "cornell", scene, 4096, None)
     independent = [gr.render(MI, scene, gr.Method("i", {"type": "independent"}), 64, s)[0]
                    for s in range(6)]
     se = np.std([im.mean() for im in independent], ddof=1)
