@@ -284,6 +284,32 @@ mod tests {
     }
 
     #[test]
+    fn a_check_needs_its_parameters_and_projections_that_say_something() {
+        let ok = check_cert(CertVerdict::Pass, json!(0), net(true, 0));
+        assert_eq!(content_of(&ok), Ok(Content::Check));
+        // Each of base, t and m missing from the parameters: no kind at all.
+        for key in ["base", "t", "m"] {
+            let mut c = ok.clone();
+            c.parameters.as_object_mut().unwrap().remove(key);
+            assert_eq!(content_of(&c).unwrap_err().field, "result", "{key}");
+        }
+        // A result item without a projection, or with one but neither verdict nor t-value.
+        for item in [
+            json!({"holds": true, "t": 0}),
+            json!({"projection": [0, 1], "m": 6}),
+        ] {
+            let mut c = ok.clone();
+            c.result = item.clone();
+            assert_eq!(content_of(&c).unwrap_err().field, "result", "{item}");
+            c.result = json!([net(true, 0), item.clone()]);
+            assert_eq!(content_of(&c).unwrap_err().field, "result", "[.., {item}]");
+        }
+        let mut empty = ok.clone();
+        empty.result = json!([]);
+        assert_eq!(content_of(&empty).unwrap_err().field, "result");
+    }
+
+    #[test]
     fn a_discrepancy_is_measured_and_labels_follow_the_content() {
         assert!(audit_discrepancy(&discrepancy(CertVerdict::Measured, json!(0.01))).is_ok());
         for v in [CertVerdict::Pass, CertVerdict::Fail] {

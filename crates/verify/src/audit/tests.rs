@@ -339,3 +339,16 @@ fn in_base_3_nets_must_run_and_flip_rank_must_not() {
     );
     assert!(e.to_string().contains("does not apply"), "{e}");
 }
+
+#[test]
+fn an_external_programs_battery_is_never_sharded() {
+    let registry = registry();
+    let c = certificate_of(&registry, &["none"]);
+    let run = audit_verify(&c, &registry).unwrap();
+    // External: its one report is shard 1/1 alone.
+    assert!(shard_members(&run.reports, (1, 1), 1, true).is_ok());
+    let e = shard_members(&[], (2, 2), 1, true).unwrap_err();
+    assert_eq!(e.field, "parameters.shard");
+    assert!(e.problem.contains("external"), "{e}");
+    assert!(shard_members(&[], (2, 2), 1, false).is_ok());
+}
