@@ -262,13 +262,7 @@ pub(super) fn check_reply(
     let largest = base.largest_word(width);
     if largest != width.mask() {
         let wb = width.bits() as usize / 8;
-        let out_of_range = bytes[8..]
-            .chunks_exact(wb)
-            .map(|c| {
-                let mut b = [0u8; 8];
-                b[..wb].copy_from_slice(c);
-                u64::from_le_bytes(b)
-            })
+        let out_of_range = le_words(&bytes[8..], wb)
             .enumerate()
             .find(|&(_, w)| w > largest);
         if let Some((k, w)) = out_of_range {
@@ -290,12 +284,14 @@ pub(super) fn check_reply(
 
 /// Little-endian words of `wb` bytes each (a trailing partial word is ignored).
 fn words_from_le(bytes: &[u8], wb: usize) -> Vec<u64> {
-    bytes
-        .chunks_exact(wb)
-        .map(|c| {
-            let mut b = [0u8; 8];
-            b[..wb].copy_from_slice(c);
-            u64::from_le_bytes(b)
-        })
-        .collect()
+    le_words(bytes, wb).collect()
+}
+
+/// The little-endian words of `wb` bytes each, read in place (no allocation).
+fn le_words(bytes: &[u8], wb: usize) -> impl Iterator<Item = u64> + '_ {
+    bytes.chunks_exact(wb).map(move |c| {
+        let mut b = [0u8; 8];
+        b[..wb].copy_from_slice(c);
+        u64::from_le_bytes(b)
+    })
 }

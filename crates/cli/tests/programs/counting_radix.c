@@ -1,4 +1,4 @@
-/* owen_radix.c's base-b Owen scramble, counting what it is sent: every request header and
+/* examples/external/owen_radix.c itself, counting what it is sent: every request header and
  * every word read go through counted_fread, and at exit "REQUESTS WORDS" is appended to the
  * file named by COUNT_FILE. The request table of `verify --list-requests` must equal it.
  * Build: cc -O2 -I examples/external -o counting_radix counting_radix.c */
@@ -27,20 +27,12 @@ static void report(void) {
 }
 
 #define fread counted_fread
-#include "radix_digits.h" /* first: it selects version 2 */
-#include "protocol.h"
-
-static uint64_t node_key(uint64_t dim_key, unsigned depth, uint64_t prefix) {
-    return mix64(dim_key ^ mix64(((uint64_t)depth << 56) ^ mix64(prefix)));
-}
-
-static uint64_t scramble(uint64_t x, unsigned width, uint32_t base, uint32_t dim, uint64_t seed) {
-    uint64_t dim_key = mix64(mix64(seed) ^ mix64(0x5EEDull + dim));
-    return scramble_digits(x, width, base, dim_key, node_key, shuffled);
-}
+/* The example itself, its main renamed so that this one can count around it. */
+#define main owen_radix_main
+#include "owen_radix.c"
+#undef main
 
 int main(int argc, char **argv) {
-    (void)argc;
     atexit(report);
-    return serve(argv[0]);
+    return owen_radix_main(argc, argv);
 }

@@ -11,7 +11,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-static unsigned char buf[8u << 20];
+#include "echo_frames.h"
 
 int main(int argc, char **argv) {
     if (argc != 2) {
@@ -33,18 +33,5 @@ int main(int argc, char **argv) {
         _exit(0);
     }
     waitpid(child, NULL, 0);
-    for (;;) {
-        unsigned char header[32];
-        if (fread(header, 1, sizeof header, stdin) != sizeof header) return 0;
-        unsigned width = header[6] | (unsigned)header[7] << 8;
-        uint32_t count = header[16] | (uint32_t)header[17] << 8 | (uint32_t)header[18] << 16 |
-                         (uint32_t)header[19] << 24;
-        size_t bytes = (size_t)count * (width / 8);
-        if (bytes > sizeof buf || fread(buf, 1, bytes, stdin) != bytes) return 3;
-        unsigned char reply[8] = {'G', 'O', 'W', 'R', header[16], header[17], header[18],
-                                  header[19]};
-        fwrite(reply, 1, sizeof reply, stdout);
-        fwrite(buf, 1, bytes, stdout);
-        fflush(stdout);
-    }
+    return echo_frames(-1);
 }

@@ -15,7 +15,7 @@
 #include <string.h>
 #include <unistd.h>
 
-static unsigned char buf[8u << 20];
+#include "echo_frames.h"
 
 static void wait_forever(void) {
     for (;;) pause();
@@ -34,20 +34,8 @@ int main(int argc, char **argv) {
     fclose(pidfile);
     if (fork() == 0) wait_forever();
     if (strcmp(mode, "never") == 0) wait_forever();
-    for (long served = 0; served < answers; served++) {
-        unsigned char header[32];
-        if (fread(header, 1, sizeof header, stdin) != sizeof header) return 3;
-        unsigned width = header[6] | (unsigned)header[7] << 8;
-        uint32_t count = header[16] | (uint32_t)header[17] << 8 | (uint32_t)header[18] << 16 |
-                         (uint32_t)header[19] << 24;
-        size_t bytes = (size_t)count * (width / 8);
-        if (bytes > sizeof buf || fread(buf, 1, bytes, stdin) != bytes) return 3;
-        unsigned char reply[8] = {'G', 'O', 'W', 'R', header[16], header[17], header[18],
-                                  header[19]};
-        fwrite(reply, 1, sizeof reply, stdout);
-        fwrite(buf, 1, bytes, stdout);
-        fflush(stdout);
-    }
+    int rc = echo_frames(answers);
+    if (rc != 1) return 3; /* stdin ended or a bad request before the answers were given */
     if (strcmp(mode, "sigstop") == 0) raise(SIGSTOP);
     wait_forever();
 }
