@@ -113,15 +113,24 @@ def scenes(mi: Any, quick: bool, side: Optional[int] = None) -> Dict[str, Dict[s
 
 def render(mi: Any, scene: Dict[str, Any], method: Method, spp: int, seed: int) -> Tuple[np.ndarray, float]:
     """One render of ``scene`` with ``method`` at ``spp`` and ``seed``: the image and seconds."""
+    image, seconds, _ = render_counted(mi, scene, method, spp, seed)
+    return image, seconds
+
+
+def render_counted(mi: Any, scene: Dict[str, Any], method: Method, spp: int,
+                   seed: int) -> Tuple[np.ndarray, float, int]:
+    """[`render`], with the samples per pixel the sampler really took: Mitsuba's ldsampler
+    rounds to a square power of two (100 → 256), stratified and multijitter to a square."""
     sampler = dict(method.sampler, sample_count=spp)
     if sampler["type"] == "gartowen":
         sampler["seed"] = seed
     d = dict(scene)
     d["sensor"] = dict(scene["sensor"], sampler=sampler)
     loaded = mi.load_dict(d)
+    taken = int(loaded.sensors()[0].sampler().sample_count())
     started = time.perf_counter()
-    image = np.array(mi.render(loaded, spp=spp, seed=seed), dtype=np.float64)
-    return image, time.perf_counter() - started
+    image = np.array(mi.render(loaded, spp=taken, seed=seed), dtype=np.float64)
+    return image, time.perf_counter() - started, taken
 
 
 #: Independent parts a reference is rendered in (their spread gives its own variance).
@@ -245,9 +254,9 @@ def run(quick: bool, out: str, seeds: Optional[int] = None, sizes: Optional[List
         for m in chosen:
             rows[m.label] = {}
             for n in sizes:
-                mse, seconds, errors = [], 0.0, []
+                mse, seconds, errors, taken = [], 0.0, [], n
                 for s in range(seeds):
-                    image, t = render(mi, scene, m, n, s)
+                    image, t, taken = render_counted(mi, scene, m, n, s)
                     errors.append(image - ref)
                     mse.append(float(((image - ref) ** 2).mean()) - noise)
                     seconds += t
@@ -256,8 +265,9 @@ def run(quick: bool, out: str, seeds: Optional[int] = None, sizes: Optional[List
                         _png(os.path.join(out, f"{name}-error-{len(rows) - 1}.png"),
                              err / max(float(err.max()), 1e-12))
                 rmse = np.sqrt(np.maximum(mse, 0.0))
-                per_sample = seconds / (seeds * n * ref.shape[0] * ref.shape[1])
+                per_sample = seconds / (seeds * taken * ref.shape[0] * ref.shape[1])
                 rows[m.label][n] = {
+                    "spp_taken": taken,
                     "rmse": float(rmse.mean()), "rmse_se": float(rmse.std(ddof=1) / math.sqrt(seeds)),
                     "mse": mse, "seconds_per_sample": per_sample,
                     "efficiency": 1.0 / (float(np.mean(mse)) * per_sample),
@@ -294,7 +304,9 @@ def markdown(doc: Dict[str, Any]) -> str:
             for n, r in by_n.items():
                 c = r["fixed_table_check"]
                 check = f"{'pass' if c['passes'] else 'FAIL'} (ρ̄ = {c['mean_correlation']:.3f}, p = {c['p_value']:.2g})"
-                lines.append(f"| {label} | {n} | {r['rmse']:.4g} ± {r['rmse_se']:.2g} | "
+                taken = r.get("spp_taken", int(n))
+                shown = f"{n} (ran {taken})" if taken != int(n) else f"{n}"
+                lines.append(f"| {label} | {shown} | {r['rmse']:.4g} ± {r['rmse_se']:.2g} | "
                              f"{r['seconds_per_sample']:.2e} | {r['efficiency']:.3g} | {check} |")
         lines += ["", "| method | against | N | MSE ratio [CI] | verdict |", "|---|---|---:|---|---|"]
         for p in s["pairs"]:

@@ -340,6 +340,12 @@ mod tests {
         v.result = json!({"nothing": 1});
         v.parameters = json!({});
         assert_eq!(content_of(&v).unwrap_err().field, "result");
+        // Each of a discrepancy result's kind, squared and value missing: no kind at all.
+        for key in ["kind", "squared", "value"] {
+            let mut d = discrepancy(CertVerdict::Measured, json!(0.01));
+            d.result.as_object_mut().unwrap().remove(key);
+            assert_eq!(content_of(&d).unwrap_err().field, "result", "{key}");
+        }
         let mut both = discrepancy(CertVerdict::Measured, json!(0.01));
         both.result["implementations"] = json!([]);
         assert_eq!(content_of(&both).unwrap_err().field, "result");
