@@ -247,6 +247,9 @@ mod tests {
             assert_eq!(content_of(c), Ok(Content::Check));
             assert!(audit_check(c).is_ok(), "{:?}", audit_check(c));
         }
+        let said = audit_check(&ok[2]).unwrap();
+        assert_eq!(said, "check, 2 projection(s), 2 verdict(s) recomputed");
+        assert!(audit_check(&ok[3]).unwrap().contains("0 verdict(s)"));
         let field = |c: &Certificate| audit_check(c).unwrap_err().field;
         let forged = [
             (
