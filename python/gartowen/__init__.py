@@ -175,7 +175,10 @@ def generate(
     )
 
 
-def scramble(words_or_points: Any, name: str, seed: int, *, base: Optional[int] = None) -> np.ndarray:
+def scramble(
+    words_or_points: Any, name: str, seed: int, *, base: Optional[int] = None,
+    bits: Optional[int] = None,
+) -> np.ndarray:
     """Scrambles a point set with a registry scrambler: column j as dimension j, rows kept.
 
     Args:
@@ -187,8 +190,12 @@ def scramble(words_or_points: Any, name: str, seed: int, *, base: Optional[int] 
         base: scrambling base for scramblers whose base is a parameter (default 2). A base
             that is not a power of two (3..65535, ``owen-oracle[:cyclic|:per-depth]``) reads
             float64 values as base-b digits, snapped to the base-b grid of ⌈log_b n⌉ digits
-            (a float cannot hold 1/3), and words as base-b digit integers (below b^m), as
-            ``gartowen scramble --scramble-base B`` does.
+            (a float cannot hold 1/3; deeper when the values carry more digits, refused when
+            no grid a float resolves holds them), and words as base-b digit integers (below
+            b^m), as ``gartowen scramble --scramble-base B`` does.
+        bits: in such a base, the width of the digit words float values are read into, 32 or
+            64 (default 32, as ``generate``'s): the output then equals ``generate(...,
+            bits=bits, scramble=name)`` of the same points.
 
     Returns:
         An array of the input's shape and dtype; equal to ``gartowen scramble`` on the same data.
@@ -197,7 +204,8 @@ def scramble(words_or_points: Any, name: str, seed: int, *, base: Optional[int] 
     name = _string("name", name)
     seed = _integer("seed", seed)
     base = _optional_integer("base", base)
-    out = _native.scramble(array, name, seed, base)
+    bits = _optional_integer("bits", bits)
+    out = _native.scramble(array, name, seed, base, bits)
     return out.reshape(array.shape)
 
 

@@ -10,7 +10,9 @@ def generate(
     seq: str, dims: int, n: int, scramble: str, seed: int, base: Optional[int], bits: int,
     words: bool, start: int, gray: bool,
 ) -> np.ndarray: ...
-def scramble(points: np.ndarray, name: str, seed: int, base: Optional[int]) -> np.ndarray: ...
+def scramble(
+    points: np.ndarray, name: str, seed: int, base: Optional[int], bits: Optional[int]
+) -> np.ndarray: ...
 def scramble_per_key(
     words: np.ndarray, name: str, keys: List[int], table_seed: Optional[int], first_dim: int,
     base: Optional[int],

@@ -110,13 +110,14 @@ fn generate<'py>(
 /// The points (or words) scrambled by a registry scrambler, column j as dimension j; the
 /// result has the input's shape (2-D) and element type.
 #[pyfunction]
-#[pyo3(signature = (points, name, seed, base))]
+#[pyo3(signature = (points, name, seed, base, bits))]
 fn scramble<'py>(
     py: Python<'py>,
     points: &Bound<'py, PyAny>,
     name: &str,
     seed: u64,
     base: Option<u64>,
+    bits: Option<u32>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let input = read_points(points, "points")?;
     let width = input.width();
@@ -132,10 +133,28 @@ fn scramble<'py>(
     arrays::ensure_room(words_needed.saturating_mul(8), "scrambling the points")?;
     let mut flat = input.words;
     let radix = gartowen::generate::radix_of_request(name, base).map_err(value_error)?;
+    if radix.is_none() && bits.is_some() {
+        return Err(value_error(
+            "bits applies to float values in a base that is not a power of two",
+        ));
+    }
     if let Some(radix) = radix {
-        // Base-b digits, as `gartowen scramble --scramble-base B` reads and writes them.
+        // Base-b digits, as `gartowen scramble --scramble-base B` reads and writes them:
+        // floats into digit words of `bits` (default 32, as generate's), words as they are.
+        let digit_width =
+            match (element, bits) {
+                (Element::F64, b) => {
+                    gartowen::generate::width_from_bits(b.unwrap_or(32)).map_err(value_error)?
+                }
+                (_, None) => width,
+                (_, Some(_)) => return Err(value_error(
+                    "bits reads float values; words are base-b digit integers of their own width",
+                )),
+            };
         let out = py
-            .detach(|| scramble_in_radix(&flat, width, dims, element, name, seed, radix))
+            .detach(|| {
+                scramble_in_radix(&flat, width, digit_width, dims, element, name, seed, radix)
+            })
             .map_err(value_error)?;
         return match out {
             RadixOut::Values(v) => Ok(Array2::from_shape_vec((n, dims), v)
@@ -190,9 +209,11 @@ enum RadixOut {
 
 /// `scramble` in a base that is not a power of two: floats snapped to the base-b grid, words
 /// as base-b digit integers (the library path `gartowen scramble` takes).
+#[allow(clippy::too_many_arguments)]
 fn scramble_in_radix(
     flat: &[u64],
     width: gartowen::core::Width,
+    digit_width: gartowen::core::Width,
     dims: usize,
     element: Element,
     name: &str,
@@ -205,7 +226,7 @@ fn scramble_in_radix(
     let set = gartowen::netcheck::PointSet::from_flat(width, dims, flat)
         .map_err(|e| RequestError::Invalid(e.to_string()))?;
     let mut points = if element == Element::F64 {
-        from_floats(&set, RadixLayout::new(width, radix)?, None)?
+        from_floats(&set, RadixLayout::new(digit_width, radix)?, None)?
     } else {
         from_digit_words(&set, RadixLayout::new(width, radix)?)?
     };

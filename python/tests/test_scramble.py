@@ -114,6 +114,14 @@ def test_base_3_floats_and_digit_words_equal_the_cli(cli, tmp_path):
         theirs = np.load(out)
         assert mine.dtype == theirs.dtype and np.array_equal(mine, theirs), name
         assert not np.array_equal(mine, np.load(plain))
+        if "--words" not in extra:
+            # 64-bit digit words, as `--bits 64` (the default is generate's 32).
+            code, _, err = cli.run("scramble", plain, "--scramble", "owen-oracle:per-depth",
+                                   "--scramble-base", "3", "--seed", "4", "--bits", "64",
+                                   "-o", out)
+            assert code == 0, err
+            wide = gartowen.scramble(np.load(plain), "owen-oracle:per-depth", 4, base=3, bits=64)
+            assert np.array_equal(wide, np.load(out)) and not np.array_equal(wide, mine)
     # Words must be base-3 digit integers below 3^20; other bases' scramblers are refused.
     with pytest.raises(ValueError, match="below 3\\^20"):
         gartowen.scramble(np.array([[3**20]], dtype=np.uint32), "owen-oracle", 0, base=3)
