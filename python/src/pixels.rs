@@ -17,7 +17,7 @@ use rayon::prelude::*;
 /// How each key scrambles.
 enum PerKey {
     /// One ART table; keys choose roots and shifts.
-    FixedTable(ArtOwen),
+    FixedTable(Box<ArtOwen>),
     /// A fresh registry instance per key.
     Fresh { name: String, base: PowerOfTwoBase },
 }
@@ -71,7 +71,7 @@ pub fn scramble_per_key<'py>(
         )));
     }
     let how = match table_seed {
-        Some(t) => PerKey::FixedTable(fixed_table(name, t)?),
+        Some(t) => PerKey::FixedTable(Box::new(fixed_table(name, t)?)),
         None => {
             let base = match base {
                 Some(b) => PowerOfTwoBase::from_base(b)
