@@ -321,6 +321,12 @@ mod tests {
         }
         let e = audit_discrepancy(&discrepancy(CertVerdict::Measured, json!("small")));
         assert_eq!(e.unwrap_err().field, "result.value");
+        // A null value (the f64 overflowed) stands only beside the exact rational.
+        let mut overflowed = discrepancy(CertVerdict::Measured, Value::Null);
+        let e = audit_discrepancy(&overflowed).unwrap_err();
+        assert_eq!(e.field, "result.value");
+        overflowed.result["exact"] = json!("1/3");
+        assert!(audit_discrepancy(&overflowed).is_ok());
         // Relabelled: the content decides, and the label must agree with it.
         let mut d = discrepancy(CertVerdict::Measured, json!(0.01));
         assert_eq!(content_of(&d), Ok(Content::Discrepancy));
