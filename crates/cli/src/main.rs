@@ -36,6 +36,7 @@ enum Command {
     Report(commands::report::ReportArgs),
     Certificate(commands::certificate::CertificateArgs),
     Scene(commands::scene::SceneArgs),
+    Render(commands::render::RenderArgs),
 }
 
 fn main() -> ExitCode {
@@ -56,6 +57,7 @@ fn main() -> ExitCode {
         Command::Report(a) => commands::report::run(a),
         Command::Certificate(a) => commands::certificate::run(a),
         Command::Scene(a) => commands::scene::run(a),
+        Command::Render(a) => commands::render::run(a),
     };
     cleanup::end_adopted();
     match result {

@@ -15,6 +15,7 @@ mod list_requests;
 mod oracle;
 mod radix_points;
 mod readme;
+mod render;
 mod report;
 mod scene;
 mod scramble;

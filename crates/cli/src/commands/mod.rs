@@ -7,6 +7,7 @@ pub mod generate;
 pub mod inspect;
 pub mod list;
 pub mod matrices;
+pub mod render;
 pub mod report;
 pub mod scene;
 pub mod scramble;
