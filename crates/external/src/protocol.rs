@@ -295,3 +295,80 @@ fn le_words(bytes: &[u8], wb: usize) -> impl Iterator<Item = u64> + '_ {
         u64::from_le_bytes(b)
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn header(b: u64, width: Width) -> RequestHeader {
+        RequestHeader {
+            width,
+            base: ProtocolBase::from_base(b).unwrap(),
+            dim: 1,
+            seed: 2,
+        }
+    }
+
+    fn reply(words: &[u64], width: Width) -> Vec<u8> {
+        let wb = width.bits() as usize / 8;
+        let mut out = REPLY_MAGIC.to_vec();
+        out.extend_from_slice(&(words.len() as u32).to_le_bytes());
+        for w in words {
+            out.extend_from_slice(&w.to_le_bytes()[..wb]);
+        }
+        out
+    }
+
+    #[test]
+    fn the_largest_word_is_b_to_the_m_less_one_or_the_width_mask() {
+        for (b, w, want) in [
+            (3, Width::W32, 3u64.pow(20) - 1),
+            (3, Width::W64, 3u64.pow(40) - 1),
+            (5, Width::W32, 5u64.pow(13) - 1),
+            (65_535, Width::W32, 65_535u64.pow(2) - 1),
+            (2, Width::W32, u32::MAX as u64),
+            (256, Width::W64, u64::MAX),
+        ] {
+            assert_eq!(
+                ProtocolBase::from_base(b).unwrap().largest_word(w),
+                want,
+                "{b} {w:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn words_past_the_largest_are_refused_on_every_side_and_the_largest_passes() {
+        for (b, width) in [(3, Width::W32), (5, Width::W64), (6, Width::W32)] {
+            let h = header(b, width);
+            let largest = h.base.largest_word(width);
+            let frame = encode_request(&h, &[0, largest]).unwrap();
+            assert_eq!(decode_request(&frame).unwrap().1, vec![0, largest]);
+            let e = encode_request(&h, &[0, largest + 1])
+                .unwrap_err()
+                .to_string();
+            assert!(
+                e.contains("word 1") && e.contains("above the largest"),
+                "{e}"
+            );
+            let mut bad = frame.clone();
+            let wb = width.bits() as usize / 8;
+            bad[HEADER_BYTES + wb..].copy_from_slice(&(largest + 1).to_le_bytes()[..wb]);
+            assert!(decode_request(&bad).unwrap_err().contains("word 1"));
+            let ok = decode_reply(&reply(&[largest, 7], width), 2, width, h.base, 1).unwrap();
+            assert_eq!(ok, vec![largest, 7]);
+            let e = decode_reply(&reply(&[7, largest + 1], width), 2, width, h.base, 1)
+                .unwrap_err()
+                .to_string();
+            assert!(
+                e.contains(&format!("reply word 1 is {}", largest + 1)),
+                "{e}"
+            );
+            assert!(e.contains(&format!("{b}^")), "{e}");
+        }
+        // A base 2^q's words fill the width: nothing is out of range.
+        let h = header(4, Width::W32);
+        let all = [0, u32::MAX as u64];
+        assert!(decode_reply(&reply(&all, Width::W32), 2, Width::W32, h.base, 1).is_ok());
+    }
+}
