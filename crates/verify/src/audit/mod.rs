@@ -140,6 +140,8 @@ pub fn audit_verify(cert: &Certificate, registry: &Registry) -> Result<AuditedRu
     }
     let reports: Vec<ImplReport> = serde_json::from_value(cert.result["implementations"].clone())
         .map_err(|e| refuse("result.implementations", e.to_string()))?;
+    // The level's sizes first: every later check reads the sub-tests it sized.
+    sizes::sizes_match_level(&reports, level)?;
     let equivalence = p.get("equivalence").is_some_and(|e| !e.is_null());
     let mut judged = None;
     for (k, r) in reports.iter().enumerate() {
@@ -170,7 +172,6 @@ pub fn audit_verify(cert: &Certificate, registry: &Registry) -> Result<AuditedRu
         }
     }
     shard_members(&reports, shard, total, external.is_some())?;
-    sizes::sizes_match_level(&reports, level)?;
     if let Some(j) = judged {
         if j > total {
             return Err(refuse(

@@ -352,3 +352,28 @@ fn an_external_programs_battery_is_never_sharded() {
     assert!(e.problem.contains("external"), "{e}");
     assert!(shard_members(&[], (2, 2), 1, false).is_ok());
 }
+
+#[test]
+fn the_level_is_held_to_the_sub_tests_seed_counts_and_depths() {
+    let registry = registry();
+    let c = certificate(&registry);
+    let node = check_at(&c, 1, "node-law");
+    let relabelled = edited(&c, |v| {
+        v["parameters"]["level"] = json!("full");
+        v["parameters"]["node_law_seeds"] = json!(10_000);
+    });
+    let e = audit_verify(&relabelled, &registry).unwrap_err();
+    assert_eq!(e.field, "parameters.level");
+    assert!(
+        e.problem.contains("at most n = 2000, as level quick draws"),
+        "{e}"
+    );
+    // A node-law sub-test deeper than the level tests (quick: depth 12).
+    let deeper = edited(&c, |v| {
+        let t = &mut v["result"]["implementations"][1]["checks"][node]["tests"][0];
+        t["depth"] = json!(13);
+    });
+    let e = audit_verify(&deeper, &registry).unwrap_err();
+    assert_eq!(e.field, "parameters.level");
+    assert!(e.problem.contains("tested depth 13"), "{e}");
+}
