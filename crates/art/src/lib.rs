@@ -9,6 +9,7 @@ pub mod composed;
 mod dims;
 pub mod engine;
 pub mod grammar;
+pub mod keyed;
 #[cfg(feature = "mutants")]
 pub mod mutants;
 pub mod peers;
@@ -19,6 +20,7 @@ pub mod variants;
 pub use composed::QArtComposed;
 pub use engine::{ArtOwen, BatchKernel, BATCH_TABLES_AFTER_WORDS, BATCH_TABLE_BYTES};
 pub use grammar::Grammar;
+pub use keyed::KeyedArt;
 #[cfg(feature = "mutants")]
 pub use mutants::{ArtMutant, TailUntranslated};
 pub use record::ArtRecord;

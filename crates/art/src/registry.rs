@@ -2,7 +2,7 @@
 //! the hash peers.
 
 use crate::peers::{DigitalShift, LinearMatrixScramble, LkFlavor, LkHash, PerBitOwen};
-use crate::{ArtOwen, ArtVariant, QArtComposed};
+use crate::{ArtOwen, ArtVariant, KeyedArt, QArtComposed};
 use gartowen_core::registry::BuildContext;
 use gartowen_core::{
     Claim, CoreError, NodeGroup, PowerOfTwoBase, Scrambler, ScramblerRequest, ScramblerSpec,
@@ -38,9 +38,9 @@ pub fn variant_of(name: &str) -> Option<ArtVariant> {
 fn build_art(req: &ScramblerRequest, ctx: &BuildContext) -> Result<Box<dyn Scrambler>, CoreError> {
     let variant = variant_of(&req.name).expect("registered names parse");
     if variant == ArtVariant::QArt4 {
-        req.allow_only(&["table", "compose"])?;
+        req.allow_only(&["table", "compose", "table-seed"])?;
     } else {
-        req.allow_only(&["table"])?;
+        req.allow_only(&["table", "table-seed"])?;
     }
     if req.flag("compose") {
         return Err(CoreError::InvalidOption {
@@ -76,6 +76,30 @@ fn build_art(req: &ScramblerRequest, ctx: &BuildContext) -> Result<Box<dyn Scram
             option: "table".into(),
             reason: format!("{symbols} symbols: at most {MAX_TABLE_SYMBOLS}"),
         });
+    }
+    let table_seed = match req.option("table-seed") {
+        None => None,
+        Some(t) => Some(t.parse::<u64>().map_err(|_| CoreError::InvalidOption {
+            scrambler: req.name.clone(),
+            option: "table-seed".into(),
+            reason: format!("'{t}' is not a seed (an integer in [0, 2^64))"),
+        })?),
+    };
+    if let Some(table_seed) = table_seed {
+        if composed {
+            return Err(CoreError::InvalidOption {
+                scrambler: req.name.clone(),
+                option: "table-seed".into(),
+                reason: "not with compose=linear (its tables compose ψ along the tree)".into(),
+            });
+        }
+        return KeyedArt::new(variant, symbols, table_seed, ctx.seed)
+            .map(|s| Box::new(s) as Box<dyn Scrambler>)
+            .map_err(|e| CoreError::InvalidOption {
+                scrambler: req.name.clone(),
+                option: "table".into(),
+                reason: e.to_string(),
+            });
     }
     let built = if composed {
         QArtComposed::new(symbols, ctx.seed).map(|s| Box::new(s) as Box<dyn Scrambler>)
@@ -168,7 +192,7 @@ pub fn specs() -> Vec<ScramblerSpec> {
         ),
         art(
             "art-owen-16p",
-            "base-16 ART-Owen: packed permutation plus 32-bit code; :table=SYMBOLS",
+            "base-16 ART-Owen: packed permutation plus 32-bit code; :table=SYMBOLS, :table-seed=S (one table drawn from S, the seed keying roots and shifts: a renderer's fixed table)",
         ),
     ];
     for name in MATRIX_NAMES {

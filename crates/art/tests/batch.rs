@@ -343,3 +343,75 @@ fn a_fixed_table_keyed_by_other_seeds_equals_the_digit_loop() {
         }
     }
 }
+
+/// `:table-seed=S` is one table drawn from S keyed by each instance's seed: keyed by S itself
+/// it is the plain scrambler of seed S, keyed otherwise it is `scramble_batch_keyed`, and every
+/// instance of one table seed shares the table's tables.
+#[test]
+fn a_table_seed_request_is_the_fixed_table_keyed_by_each_seed() {
+    use gartowen_core::registry::{BuildContext, Registry};
+    use gartowen_core::PowerOfTwoBase;
+    let mut registry = Registry::with_core();
+    for spec in gartowen_art::registry::specs() {
+        registry.add(spec);
+    }
+    let build = |request: &str, seed: u64| {
+        registry
+            .build_with(
+                request,
+                &BuildContext {
+                    seed,
+                    default_base: PowerOfTwoBase::B2,
+                },
+            )
+            .unwrap()
+    };
+    let xs: Vec<u64> = words(5, 200).into_iter().map(|w| w & 0xFFFF_FFFF).collect();
+    let run = |s: &dyn Scrambler| {
+        let mut w = xs.clone();
+        s.scramble_batch(&mut w, Width::W32, 2);
+        w
+    };
+    for name in ["art-owen-2", "art-owen-16p", "q-art-4:table=64"] {
+        let keyed_by_itself = build(&format!("{name}:table-seed=7"), 7);
+        assert_eq!(
+            run(keyed_by_itself.as_ref()),
+            run(build(name, 7).as_ref()),
+            "{name}"
+        );
+        assert_eq!(
+            keyed_by_itself.name(),
+            format!("{}:table-seed=7", build(name, 7).name())
+        );
+        let keyed = build(&format!("{name}:table-seed=7"), 9);
+        let symbols = if name.contains("table=64") { 64 } else { 256 };
+        let variant = gartowen_art::registry::variant_of(name.split(':').next().unwrap()).unwrap();
+        let mut want = xs.clone();
+        ArtOwen::new(variant, symbols, 7)
+            .unwrap()
+            .scramble_batch_keyed(&mut want, Width::W32, 2, 9);
+        assert_eq!(run(keyed.as_ref()), want, "{name}");
+        let one: Vec<u64> = xs
+            .iter()
+            .map(|&x| keyed.scramble(x, Width::W32, 2))
+            .collect();
+        assert_eq!(one, want, "{name}: word by word");
+    }
+    for bad in [
+        "art-owen-16p:table-seed=x",
+        "q-art-4:compose=linear:table-seed=1",
+    ] {
+        let e = registry
+            .build_with(
+                bad,
+                &BuildContext {
+                    seed: 0,
+                    default_base: PowerOfTwoBase::B2,
+                },
+            )
+            .err()
+            .unwrap_or_else(|| panic!("{bad} accepted"))
+            .to_string();
+        assert!(e.contains("table-seed"), "{bad}: {e}");
+    }
+}

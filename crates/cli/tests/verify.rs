@@ -401,3 +401,47 @@ fn equivalent_to_owen_is_a_check_with_its_seeds_margin_and_verdict() {
         assert!(!o.stderr.is_empty());
     }
 }
+
+/// One fixed table, many seeds (issue 58, item 3): `art-owen-16p:table-seed=7` judged by the
+/// battery over seeds that only key roots and shifts, and the equivalence to Owen repeated
+/// with that one table; its certificate passes the audit.
+#[test]
+fn a_fixed_table_keyed_by_the_seeds_passes_the_battery_and_is_equivalent_to_owen() {
+    let dir = tempfile::tempdir().unwrap();
+    let cert = dir.path().join("fixed.json");
+    let o = gartowen(&[
+        "verify",
+        "--impl",
+        "art-owen-16p:table-seed=7",
+        "--equivalent-to",
+        "owen",
+        "--json",
+        cert.to_str().unwrap(),
+    ]);
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{out}{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(out.contains("art-owen-16p:table=256:table-seed=7"), "{out}");
+    assert!(out.contains("equivalent within ±10%"), "{out}");
+    let doc: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&cert).unwrap()).unwrap();
+    let checks = doc["result"]["implementations"][0]["checks"]
+        .as_array()
+        .unwrap();
+    let equivalence = checks
+        .iter()
+        .find(|c| c["check"] == "equivalent-to-owen")
+        .unwrap();
+    assert_eq!(equivalence["verdict"], "pass", "{equivalence}");
+    let audit = gartowen(&["certificate", "check", cert.to_str().unwrap()]);
+    assert_eq!(
+        audit.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&audit.stderr)
+    );
+}
