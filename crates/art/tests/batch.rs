@@ -396,6 +396,18 @@ fn a_table_seed_request_is_the_fixed_table_keyed_by_each_seed() {
             .map(|&x| keyed.scramble(x, Width::W32, 2))
             .collect();
         assert_eq!(one, want, "{name}: word by word");
+        // The table's words and bytes are the table's own.
+        let plain = build(name, 7);
+        for w in [Width::W32, Width::W64] {
+            assert_eq!(
+                keyed.supports_width(w),
+                plain.supports_width(w),
+                "{name} {w:?}"
+            );
+            assert!(keyed.supports_width(w), "{name} {w:?}");
+        }
+        assert!(keyed.table_bytes() > 0);
+        assert_eq!(keyed.table_bytes(), plain.table_bytes(), "{name}");
     }
     for bad in [
         "art-owen-16p:table-seed=x",
