@@ -1,6 +1,7 @@
 //! The audit against a real quick run: the untouched certificate passes, and each edit is
 //! refused naming its field.
 
+use super::shards::shard_members;
 use super::*;
 use crate::battery::{seeds_used, verify_shard, Shard};
 use serde_json::json;
