@@ -48,9 +48,12 @@ fn remove_pending() {
 
 /// Kills and reaps whatever this process still has as children: at the end of a command the
 /// external programs it started are ended, so these are descendants that escaped their
-/// process group and pipes (a double fork into a new session). Nothing is left running.
+/// process group and pipes (a double fork into a new session). Nothing is left running. A
+/// command that started no external program has none, and skips the scan of `/proc`.
 pub fn end_adopted() {
-    gartowen::external::orphans::kill_children(8);
+    if gartowen::external::any_spawned() {
+        gartowen::external::orphans::kill_children(8);
+    }
 }
 
 /// Registers a temporary file (or a staging folder, removed with its contents) being written.

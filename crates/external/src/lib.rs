@@ -53,7 +53,7 @@ pub mod protocol;
 
 pub use adapter::{ExternalRadixScrambler, ExternalScrambler};
 pub use error::ExternalError;
-pub use process::{kill_live_groups, split_command, ExternalProcess};
+pub use process::{any_spawned, kill_live_groups, split_command, ExternalProcess};
 pub use protocol::{
     decode_reply, decode_request, encode_request, ProtocolBase, RequestHeader, HEADER_BYTES,
     MAX_BATCH, PROTOCOL_VERSION, RADIX_PROTOCOL_VERSION, REPLY_MAGIC, REQUEST_MAGIC,

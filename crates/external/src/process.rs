@@ -85,6 +85,15 @@ const EXIT_POLL: Duration = Duration::from_millis(50);
 /// `Drop`.
 static LIVE_GROUPS: Mutex<Vec<(u32, Vec<u64>)>> = Mutex::new(Vec::new());
 
+/// Whether this process has started an external program (only then can it have orphans of
+/// one to end).
+static SPAWNED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// Whether [`ExternalProcess::spawn`] has started a program in this process.
+pub fn any_spawned() -> bool {
+    SPAWNED.load(std::sync::atomic::Ordering::SeqCst)
+}
+
 /// Kills the process group of every external program still running (with its helpers), and
 /// every process still holding one of their pipes (helpers that left the group with
 /// `setsid`). Meant for a signal handler's last act before the process ends.
@@ -176,6 +185,7 @@ impl ExternalProcess {
             program: words[0].clone(),
             reason: e.to_string(),
         })?;
+        SPAWNED.store(true, std::sync::atomic::Ordering::SeqCst);
         let pipes = child_pipes(&child);
         LIVE_GROUPS
             .lock()

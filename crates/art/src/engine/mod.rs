@@ -333,7 +333,12 @@ impl ArtOwen {
     #[cold]
     #[inline(never)]
     fn hashed_dim(&self, dim: u32) -> DimKey {
-        (self.dimension_rule)(self.seed, dim, self.grammar.symbols())
+        self.key_for(self.seed, dim)
+    }
+
+    /// The key of `dim` that a table seeded `key_seed` would use (root symbol and shifts).
+    fn key_for(&self, key_seed: u64, dim: u32) -> DimKey {
+        (self.dimension_rule)(key_seed, dim, self.grammar.symbols())
     }
 
     #[inline(always)]
@@ -446,8 +451,7 @@ impl ArtOwen {
     /// render (or pixel) by a seed of its own; keyed by the table's own seed this is
     /// [`Scrambler::scramble_batch`].
     pub fn scramble_batch_keyed(&self, words: &mut [u64], width: Width, dim: u32, key_seed: u64) {
-        let key = (self.dimension_rule)(key_seed, dim, self.grammar.symbols());
-        self.forward_batch(words, width, key)
+        self.forward_batch(words, width, self.key_for(key_seed, dim))
     }
 
     /// One word of [`ArtOwen::scramble_batch_keyed`], by the plain digit-by-digit loop (the
@@ -459,9 +463,7 @@ impl ArtOwen {
         dim: u32,
         key_seed: u64,
     ) -> u64 {
-        let key = (self.dimension_rule)(key_seed, dim, self.grammar.symbols());
-        let (root, a, d) = Self::shifts_at(key, width);
-        self.run_from(x ^ a, width, root, false) ^ d
+        self.digit_loop(x, width, self.key_for(key_seed, dim))
     }
 
     /// The seed the tables were drawn from (the key [`ArtOwen::scramble_batch_keyed`] takes
@@ -482,7 +484,12 @@ impl ArtOwen {
 
     /// The forward scramble by the plain digit-by-digit loop (the reference for the step table).
     pub fn scramble_digit_by_digit(&self, x: u64, width: Width, dim: u32) -> u64 {
-        let (root, a, d) = self.keys_at(dim, width);
+        self.digit_loop(x, width, self.dim_key(dim))
+    }
+
+    /// The forward scramble under `key` by the digit-by-digit loop.
+    fn digit_loop(&self, x: u64, width: Width, key: DimKey) -> u64 {
+        let (root, a, d) = Self::shifts_at(key, width);
         self.run_from(x ^ a, width, root, false) ^ d
     }
 

@@ -219,15 +219,12 @@ pub fn write_figures(
             c.joint
                 .iter()
                 .enumerate()
-                .map(|(i, &m)| {
-                    let se = c.joint_se.get(i).copied().unwrap_or(0.0);
-                    (m - 2.0 * se, m + 2.0 * se)
-                })
+                .map(|(i, &m)| two_se(m, c.joint_se.get(i).copied()))
                 .collect()
         })
         .collect();
     let baseline = random(16);
-    joint_bands.push(baseline.points.iter().map(|&(_, m)| (m, m)).collect());
+    joint_bands.push(exact(&baseline));
     joint.push(baseline);
     loglog_lines_banded(
         &dir.join("figure2_joint.png"),
@@ -253,11 +250,7 @@ pub fn write_figures(
             bands.push(
                 mean.iter()
                     .enumerate()
-                    .map(|(i, &(_, m))| {
-                        let se = c.pair_se.get(i).and_then(|v| v.get(k)).copied();
-                        let se = se.unwrap_or(0.0);
-                        (m - 2.0 * se, m + 2.0 * se)
-                    })
+                    .map(|(i, &(_, m))| two_se(m, c.pair_se.get(i).and_then(|v| v.get(k)).copied()))
                     .collect(),
             );
             pair_series.push(Series {
@@ -266,7 +259,7 @@ pub fn write_figures(
             });
         }
         let base = random(2);
-        bands.push(base.points.iter().map(|&(_, m)| (m, m)).collect());
+        bands.push(exact(&base));
         pair_series.push(base);
         let name = format!("figure2_pairs_{}.png", file_stem(&c.scrambler));
         loglog_lines_banded(
@@ -343,4 +336,15 @@ fn file_stem(request: &str) -> String {
             c => c,
         })
         .collect()
+}
+
+/// The band of ±2 standard errors around `mean` (none when the SE is unknown).
+fn two_se(mean: f64, se: Option<f64>) -> (f64, f64) {
+    let se = se.unwrap_or(0.0);
+    (mean - 2.0 * se, mean + 2.0 * se)
+}
+
+/// The band of a series known exactly (an expectation, not an estimate): its own line.
+fn exact(series: &Series) -> Vec<(f64, f64)> {
+    series.points.iter().map(|&(_, m)| (m, m)).collect()
 }
