@@ -44,31 +44,53 @@ VERDICT_ALPHA = 0.05
 
 @dataclass(frozen=True)
 class Method:
-    """A sampler as a Mitsuba sampler dict (``gartowen`` ones get the seed as a property)."""
+    """A sampler as a Mitsuba sampler dict (``gartowen`` ones get the seed as a property), with
+    the short key ``--methods`` names it by (default: its label)."""
 
     label: str
     sampler: Dict[str, Any]
+    key: str = ""
 
 
 def methods(quick: bool) -> List[Method]:
     """The methods of issue 58: Mitsuba's own, then gartowen's (the quick mode takes a subset)."""
-    g = lambda label, **p: Method(label, dict(type="gartowen", **p))
-    own = [Method("mitsuba independent", {"type": "independent"}),
-           Method("mitsuba stratified", {"type": "stratified"}),
-           Method("mitsuba multijitter", {"type": "multijitter"}),
-           Method("mitsuba ldsampler", {"type": "ldsampler"})]
-    ours = [g("sobol + owen (binary)", sequence="sobol", scramble="owen-oracle:base=2"),
-            g("sobol + lk-hash", sequence="sobol", scramble="lk-hash"),
-            g("sz16 + art-owen-2 (fixed table)", sequence="sz16", scramble="art-owen-2"),
-            g("sz16 + art-owen-16p (fixed table)", sequence="sz16", scramble="art-owen-16p"),
-            g("sz16 + art-owen-16p (table per pixel)", sequence="sz16", scramble="art-owen-16p",
-              table="per-pixel"),
-            g("sz16 + owen (base 16)", sequence="sz16", scramble="owen-oracle:base=16"),
-            g("control: sz16 + art-owen-16p, one key for every pixel", sequence="sz16",
-              scramble="art-owen-16p", keys="shared")]
+    g = lambda key, label, **p: Method(label, dict(type="gartowen", **p), key)
+    own = [Method("mitsuba independent", {"type": "independent"}, "independent"),
+           Method("mitsuba stratified", {"type": "stratified"}, "stratified"),
+           Method("mitsuba multijitter", {"type": "multijitter"}, "multijitter"),
+           Method("mitsuba ldsampler", {"type": "ldsampler"}, "ldsampler")]
+    ours = [g("sobol-owen", "sobol + owen (binary)", sequence="sobol",
+              scramble="owen-oracle:base=2"),
+            g("sobol-lk-hash", "sobol + lk-hash", sequence="sobol", scramble="lk-hash"),
+            g("art-owen-2", "sz16 + art-owen-2 (fixed table)", sequence="sz16",
+              scramble="art-owen-2"),
+            g("art-owen-16p", "sz16 + art-owen-16p (fixed table)", sequence="sz16",
+              scramble="art-owen-16p"),
+            g("art-owen-16p-per-pixel", "sz16 + art-owen-16p (table per pixel)", sequence="sz16",
+              scramble="art-owen-16p", table="per-pixel"),
+            g("owen-16", "sz16 + owen (base 16)", sequence="sz16", scramble="owen-oracle:base=16"),
+            g("control-shared-key", "control: sz16 + art-owen-16p, one key for every pixel",
+              sequence="sz16", scramble="art-owen-16p", keys="shared")]
     if quick:
         return [own[0], ours[0], ours[3], ours[5], ours[6]]
     return own + ours
+
+
+def select_methods(quick: bool, keys: Optional[List[str]]) -> List[Method]:
+    """The methods ``keys`` names (in the benchmark's order), or all of the mode's.
+
+    Raises:
+        ValueError: a key that names no method.
+    """
+    every = methods(False)
+    if not keys:
+        return methods(quick)
+    known = {m.key for m in every}
+    unknown = [k for k in keys if k not in known]
+    if unknown:
+        raise ValueError(f"unknown method {unknown[0]!r}: the methods are "
+                         f"{', '.join(m.key for m in every)}")
+    return [m for m in every if m.key in keys]
 
 
 #: The pairs judged: (method, against).
@@ -185,16 +207,26 @@ def pixel_correlation(errors: np.ndarray) -> Dict[str, float]:
 def verdict(a: Sequence[float], b: Sequence[float], margin: float, alpha: float) -> Dict[str, Any]:
     """MSE ratio mean(a)/mean(b) with its confidence interval (delta method on the log) at
     level ``alpha``, and the verdict: better (< 1), worse (> 1), equivalent (inside [1/(1 +
-    margin), 1 + margin]) or inconclusive."""
+    margin), 1 + margin]) or inconclusive; with the ratio the test detects at power 0.9
+    (``detects``) and the seeds per method that would decide equivalence at this spread
+    (``seeds_for_equivalence``, None when the observed ratio lies outside the margin)."""
     ma, mb = float(np.mean(a)), float(np.mean(b))
     if ma <= 0 or mb <= 0:
         # Errors below the reference's own noise: no ratio to judge.
         return {"ratio": float("nan"), "low": float("nan"), "high": float("nan"),
-                "verdict": "inconclusive"}
+                "verdict": "inconclusive", "detects": float("nan"),
+                "seeds_for_equivalence": None}
     se = math.sqrt(np.var(a, ddof=1) / len(a) / ma ** 2 + np.var(b, ddof=1) / len(b) / mb ** 2)
     z = NormalDist().inv_cdf(1 - alpha / 2)
     ratio = ma / mb
     low, high = ratio * math.exp(-z * se), ratio * math.exp(z * se)
+    # Power: a true ratio of `detects` (or its inverse) is called different with probability
+    # 0.9. Seeds: how many per method would put this spread's interval inside the margin, were
+    # the ratio what was observed (none when it lies outside the margin).
+    detects = math.exp((z + NormalDist().inv_cdf(0.9)) * se)
+    room = math.log(1 + margin) - abs(math.log(ratio))
+    seeds = max(len(a), len(b))
+    needed = math.ceil(seeds * (z * se / room) ** 2) if room > 0 else None
     if 1 / (1 + margin) <= low and high <= 1 + margin:
         word = "equivalent"
     elif high < 1:
@@ -203,7 +235,8 @@ def verdict(a: Sequence[float], b: Sequence[float], margin: float, alpha: float)
         word = "worse"
     else:
         word = "inconclusive"
-    return {"ratio": ratio, "low": low, "high": high, "verdict": word}
+    return {"ratio": ratio, "low": low, "high": high, "verdict": word, "detects": detects,
+            "seeds_for_equivalence": needed}
 
 
 def _png(path: str, image: np.ndarray) -> None:
@@ -226,17 +259,20 @@ SCENES = ("cornell", "penumbra", "glossy")
 
 def run(quick: bool, out: str, seeds: Optional[int] = None, sizes: Optional[List[int]] = None,
         margin: float = 0.2, reference_spp: Optional[int] = None, log: Any = sys.stderr,
-        only: Optional[List[str]] = None, side: Optional[int] = None) -> Dict[str, Any]:
-    """Runs the benchmark (the scenes ``only`` names, else all of the mode's) and writes its
-    files into ``out``; returns the JSON document.
+        only: Optional[List[str]] = None, side: Optional[int] = None,
+        method_keys: Optional[List[str]] = None) -> Dict[str, Any]:
+    """Runs the benchmark (the scenes ``only`` names, else all of the mode's; the methods
+    ``method_keys`` names, else all of the mode's) and writes its files into ``out``; returns
+    the JSON document.
 
     Raises:
-        ValueError: an unknown scene name.
+        ValueError: an unknown scene or method name.
         gartowen.mitsuba.MitsubaUnavailable: Mitsuba or libLLVM is missing.
     """
     unknown = [n for n in only or [] if n not in SCENES]
     if unknown:
         raise ValueError(f"unknown scene {unknown[0]!r}: the scenes are {', '.join(SCENES)}")
+    chosen = select_methods(quick, method_keys)
     mi = gm.load_mitsuba()
     seeds = seeds or (8 if quick else 32)
     sizes = sizes or ([16, 64] if quick else [16, 32, 64, 100, 256, 1024])
@@ -246,7 +282,6 @@ def run(quick: bool, out: str, seeds: Optional[int] = None, sizes: Optional[List
                            "resolution": side or (16 if quick else 32),
                            "reference_spp": reference_spp, "verdict_alpha": VERDICT_ALPHA,
                            "correlation_alpha": CORRELATION_ALPHA, "scenes": {}}
-    chosen = methods(quick)
     pairs = [p for p in PAIRS if {p[0], p[1]} <= {m.label for m in chosen}]
     chosen_scenes = scenes(mi, quick and not only, side)
     for name, scene in chosen_scenes.items():
@@ -303,7 +338,10 @@ def markdown(doc: Dict[str, Any]) -> str:
              f"within ±{doc['margin']:.0%}. Fixed-table check: mean correlation of adjacent "
              f"pixels' errors, two-sided level {doc['correlation_alpha']} per row, not "
              f"corrected across rows (each row's false-alarm rate is its level), with the "
-             f"|ρ̄| it detects at power 0.9.", ""]
+             f"|ρ̄| it detects at power 0.9. A pair's `detects` is the MSE ratio (or its "
+             f"inverse) called different at power 0.9; `seeds for ±margin` is how many seeds "
+             f"per method would decide equivalence at the observed ratio and spread "
+             f"(`outside`: the ratio lies outside the margin).", ""]
     for name, s in doc["scenes"].items():
         lines += [f"## {name}", "", "| method | N | RMSE ± SE | s/sample | efficiency | fixed-table check |",
                   "|---|---:|---|---:|---:|---|"]
@@ -317,10 +355,14 @@ def markdown(doc: Dict[str, Any]) -> str:
                 shown = f"{n} (ran {taken})" if taken != int(n) else f"{n}"
                 lines.append(f"| {label} | {shown} | {r['rmse']:.4g} ± {r['rmse_se']:.2g} | "
                              f"{r['seconds_per_sample']:.2e} | {r['efficiency']:.3g} | {check} |")
-        lines += ["", "| method | against | N | MSE ratio [CI] | verdict |", "|---|---|---:|---|---|"]
+        lines += ["", "| method | against | N | MSE ratio [CI] | verdict | detects | seeds for ±margin |",
+                  "|---|---|---:|---|---|---:|---:|"]
         for p in s["pairs"]:
+            needed = p.get("seeds_for_equivalence")
             lines.append(f"| {p['method']} | {p['against']} | {p['n']} | {p['ratio']:.3f} "
-                         f"[{p['low']:.3f}, {p['high']:.3f}] | {p['verdict']} |")
+                         f"[{p['low']:.3f}, {p['high']:.3f}] | {p['verdict']} | "
+                         f"{p.get('detects', float('nan')):.2f}× | "
+                         f"{needed if needed is not None else 'outside'} |")
         lines.append("")
     return "\n".join(lines)
 
@@ -334,6 +376,9 @@ def main(argv: Optional[List[str]] = None) -> int:
     p.add_argument("--sizes", help="samples per pixel, comma-separated (default 16,64 quick)")
     p.add_argument("--margin", type=float, default=0.2, help="equivalence margin (default 0.2)")
     p.add_argument("--resolution", type=int, help="image side in pixels (default 16 quick, 32 full)")
+    p.add_argument("--methods", help="methods to run, comma-separated keys ("
+                                     + ", ".join(m.key for m in methods(False))
+                                     + "; default: the mode's)")
     p.add_argument("--scenes", help=f"scenes to run, comma-separated ({', '.join(SCENES)}; "
                                     "default: cornell when --quick, all otherwise)")
     a = p.parse_args(argv)
@@ -351,7 +396,9 @@ def main(argv: Optional[List[str]] = None) -> int:
     try:
         if a.resolution is not None and not 2 <= a.resolution <= 1024:
             raise ValueError(f"--resolution {a.resolution}: 2 to 1024 pixels")
-        run(a.quick, a.out, a.seeds, sizes, a.margin, only=only, side=a.resolution)
+        keys = a.methods.split(",") if a.methods else None
+        run(a.quick, a.out, a.seeds, sizes, a.margin, only=only, side=a.resolution,
+            method_keys=keys)
     except (gm.MitsubaUnavailable, ValueError) as e:
         print(f"gartowen-render: {e}", file=sys.stderr)
         return 2

@@ -6,13 +6,22 @@
 //! - **variance**: the estimator-variance ratio to the exact Owen variance at box levels 1–3
 //!   ([`crate::fidelity`]; the reference is exact, so only the variant's standard error counts),
 //!   at the levels with enough expected hits to judge ([`MIN_EXPECTED_HITS`]);
+//! - **diagonal moments**: the second and fourth moments of the error of the diagonal-cell
+//!   estimates against their exact Owen values ([`gartowen::battery::diagonal_cells`]): the
+//!   fourth sees 4-point laws, where AGL(q,2) and dimension pairs sharing a table path differ
+//!   from Owen while every variance agrees;
 //! - **D²**: the mean L2-star D² of sz16 jointly in 16-D and of every pair (0, j), at each N of
 //!   the discrepancy curves, against the curve of `owen-oracle:base=B` with its own seeds
 //!   (independent means: delta method on the log ratio).
+//!
+//! The [`CONTROLS`] are judged the same way, so that the section shows each statistic failing
+//! where it should: the binary digital shift on the coordinate mean, the AGL-only Owen scramble
+//! on the fourth diagonal moment.
 
 use crate::curves::DiscrepancyCurve;
 use crate::fidelity::VarianceRow;
 use gartowen::art::registry::variant_of;
+use gartowen::battery::diagonal_cells::ORDERS;
 use gartowen::battery::equivalence::{
     judge, ratio_of_means, Equivalence, EquivalenceSettings, EquivalenceVerdict,
 };
@@ -50,6 +59,22 @@ fn art_base(request: &str) -> Option<u32> {
     variant_of(request.split(':').next()?).map(|v| 1 << v.q())
 }
 
+/// Controls judged beside the ART variants, each with its base, to show what each statistic
+/// sees: a binary digital shift (Owen's box variances and mean D², not its coordinate mean's
+/// variance) and Owen with every node uniform over AGL(4,2) instead of S_16 (Owen's every
+/// variance, not the fourth diagonal moment).
+pub const CONTROLS: [(&str, u32); 2] = [("digital-shift", 2), ("owen-oracle:affine:base=16", 16)];
+
+/// The base a variance row is judged in: an ART variant's, or a control's.
+fn judged_base(request: &str) -> Option<u32> {
+    art_base(request).or_else(|| {
+        CONTROLS
+            .iter()
+            .find(|(name, _)| *name == request)
+            .map(|(_, base)| *base)
+    })
+}
+
 /// A variance row's judgeable statistics (name, ratio to Owen, its standard error): the
 /// coordinate means, and the box levels with at least [`MIN_EXPECTED_HITS`] expected hits at
 /// `seeds` seeds.
@@ -61,6 +86,10 @@ fn row_statistics(row: &VarianceRow, seeds: u64) -> Vec<(String, f64, f64)> {
         .zip(&row.mean_ratio_se)
         .enumerate()
         .map(|(dim, (r, se))| (format!("variance of the mean, dim {dim}"), *r, *se));
+    let diagonal = ORDERS
+        .iter()
+        .zip(row.diagonal_ratio.iter().zip(&row.diagonal_ratio_se))
+        .map(|(order, (r, se))| (format!("diagonal moment {order}"), *r, *se));
     let boxes = row.levels.iter().enumerate().filter_map(move |(k, level)| {
         if expected_hits(seeds, q, *level) < MIN_EXPECTED_HITS {
             return None;
@@ -70,12 +99,12 @@ fn row_statistics(row: &VarianceRow, seeds: u64) -> Vec<(String, f64, f64)> {
         };
         Some((format!("variance box level {level}"), *r, *se))
     });
-    means.chain(boxes).collect()
+    means.chain(diagonal).chain(boxes).collect()
 }
 
 fn variance_candidates(rows: &[VarianceRow]) -> Vec<Candidate> {
     let mut out = Vec::new();
-    for row in rows.iter().filter(|r| art_base(&r.scrambler).is_some()) {
+    for row in rows.iter().filter(|r| judged_base(&r.scrambler).is_some()) {
         for (statistic, ratio, se) in row_statistics(row, row.seeds) {
             out.push(Candidate {
                 scrambler: row.scrambler.clone(),
@@ -233,7 +262,8 @@ pub fn markdown(rows: &[EquivalenceRow]) -> String {
     let s = first.result.settings;
     let mut md = format!(
         "\n## Equivalence to full-tree Owen\n\n\
-         Each ART variant against the Owen scramble of its base, as a ratio (variant / Owen). \
+         Each ART variant, and each control (a binary digital shift; Owen with AGL(4,2) \
+         nodes), against the Owen scramble of its base, as a ratio (variant / Owen). \
          **equivalent within ±{pct:.0}%**: the {tost:.0}% interval of the ratio lies inside \
          [{lo:.2}, {hi:.2}] (two one-sided tests at level α = {a}; the verdict for all of a \
          variant's statistics together needs no correction). **different**: the two-sided \
@@ -243,7 +273,10 @@ pub fn markdown(rows: &[EquivalenceRow]) -> String {
          test finds with 80% power. Variance: the variance over seeds of the coordinate mean \
          (which sees the joint law inside a dimension) and of box-volume estimates (levels 1–3, \
          where enough points are expected: these see only nestedness and uniform outputs) \
-         against the exact Owen values; D²: the mean L2-star D² of sz16 against \
+         against the exact Owen values; diagonal moments: the second and fourth moments of the \
+         error of b-point diagonal-cell estimates over 16 dimension pairs (the fourth reads \
+         4-point laws, which every variance misses: AGL(q,2) has 5/4 of Owen's, and so does \
+         a pair of dimensions whose scrambles are translates); D²: the mean L2-star D² of sz16 against \
          `owen-oracle` of the same base with its own seeds.\n\n\
          | scrambler | equivalent | different | inconclusive |\n|---|---|---|---|\n",
         pct = s.margin * 100.0,
@@ -286,6 +319,33 @@ pub fn markdown(rows: &[EquivalenceRow]) -> String {
             e.tost_interval[1],
             e.detectable * 100.0,
             e.words()
+        );
+    }
+    md
+}
+
+/// The translate-pair diagnosis of the fourth diagonal moment, one row per variance row in
+/// base ≥ 8: how often a pair of dimensions got scrambles that are translates of each other at
+/// the top digit (Owen's probability is b/b!, 7.6e-13 per pair in base 16).
+pub fn translate_markdown(rows: &[VarianceRow]) -> String {
+    let mut md = String::new();
+    for r in rows {
+        let Some([translates, pairs]) = r.translate_pairs else {
+            continue;
+        };
+        if md.is_empty() {
+            md += "\nDimension pairs whose two scrambles were translates of each other at the top \
+                   digit (all b diagonal-cell points on one diagonal), which the fourth diagonal \
+                   moment weighs most: an ART table that gives two dimensions the same root \
+                   symbol does this in a fraction of them.\n\n\
+                   | scrambler | translate pairs | pairs read | per pair | Owen's per pair |\n\
+                   |---|---|---|---|---|\n";
+        }
+        let owen = (1..r.base).fold(1.0, |p, k| p / f64::from(k));
+        md += &format!(
+            "| {} | {translates} | {pairs} | {:.2e} | {owen:.2e} |\n",
+            r.scrambler,
+            translates as f64 / pairs.max(1) as f64
         );
     }
     md
@@ -353,6 +413,9 @@ mod tests {
             ratio_se: vec![Some(0.02), Some(0.03), None],
             mean_ratio: vec![0.5, 1.01],
             mean_ratio_se: vec![0.01, 0.01],
+            diagonal_ratio: vec![],
+            diagonal_ratio_se: vec![],
+            translate_pairs: None,
         }];
         let out = equivalence_rows(&rows, &[], 0.1, 0.05);
         assert_eq!(
@@ -370,6 +433,61 @@ mod tests {
     }
 
     #[test]
+    fn diagonal_moments_and_controls_are_judged() {
+        let row = |name: &str, base: u32, fourth: f64| VarianceRow {
+            scrambler: name.into(),
+            base,
+            seeds: 10_000,
+            levels: vec![],
+            ratio: vec![],
+            ratio_se: vec![],
+            mean_ratio: vec![],
+            mean_ratio_se: vec![],
+            diagonal_ratio: vec![1.0, fourth],
+            diagonal_ratio_se: vec![0.005, 0.02],
+            translate_pairs: None,
+        };
+        let rows = vec![
+            row("owen-oracle:affine:base=16", 16, 1.25),
+            row("art-owen-16p", 16, 1.0),
+            row("lk-hash", 2, 3.0),
+        ];
+        let out = equivalence_rows(&rows, &[], 0.1, 0.05);
+        // The control and the ART variant, two moments each; lk-hash is neither.
+        assert_eq!(out.len(), 4, "{out:?}");
+        let verdict = |name: &str, statistic: &str| {
+            out.iter()
+                .find(|r| r.scrambler == name && r.statistic == statistic)
+                .unwrap()
+                .result
+                .verdict
+        };
+        use EquivalenceVerdict::*;
+        assert_eq!(
+            verdict("owen-oracle:affine:base=16", "diagonal moment 2"),
+            Equivalent
+        );
+        assert_eq!(
+            verdict("owen-oracle:affine:base=16", "diagonal moment 4"),
+            Different
+        );
+        assert_eq!(verdict("art-owen-16p", "diagonal moment 4"), Equivalent);
+        assert_eq!(out[0].reference, "exact Owen variance, base 16");
+        assert_eq!(judged_base("digital-shift"), Some(2));
+        assert_eq!(judged_base("lms-shift"), None);
+        // The diagnosis table lists the rows that carry one.
+        let mut with = row("art-owen-16p", 16, 1.2);
+        with.translate_pairs = Some([35, 160_000]);
+        let md = translate_markdown(&[row("art-owen-2", 2, 1.0), with]);
+        assert!(
+            md.contains("| art-owen-16p | 35 | 160000 | 2.19e-4 | 7.65e-13 |"),
+            "{md}"
+        );
+        assert!(!md.contains("art-owen-2"));
+        assert_eq!(translate_markdown(&[row("art-owen-2", 2, 1.0)]), "");
+    }
+
+    #[test]
     fn composed_q_art_is_also_judged_against_q_art() {
         let row = |name: &str, mean: f64| VarianceRow {
             scrambler: name.into(),
@@ -380,6 +498,9 @@ mod tests {
             ratio_se: vec![Some(0.01), Some(0.01), Some(0.01)],
             mean_ratio: vec![mean, 1.0],
             mean_ratio_se: vec![0.01, 0.01],
+            diagonal_ratio: vec![],
+            diagonal_ratio_se: vec![],
+            translate_pairs: None,
         };
         let rows = vec![row("q-art-4", 1.0), row("q-art-4:compose=linear", 1.3)];
         let curves = vec![

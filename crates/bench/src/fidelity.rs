@@ -38,6 +38,17 @@ pub struct VarianceRow {
     /// Standard error of each `mean_ratio`.
     #[serde(default)]
     pub mean_ratio_se: Vec<f64>,
+    /// The diagonal-cell moments of orders 2 and 4 / Owen's exact values
+    /// (`gartowen::battery::diagonal_cells`; empty in reports written before them).
+    #[serde(default)]
+    pub diagonal_ratio: Vec<f64>,
+    /// Standard error of each `diagonal_ratio`.
+    #[serde(default)]
+    pub diagonal_ratio_se: Vec<f64>,
+    /// Dimension pairs whose scrambles were translates of each other at the top digit, and
+    /// the pairs read (base ≥ 8; `null` below).
+    #[serde(default)]
+    pub translate_pairs: Option<[u64; 2]>,
 }
 
 /// The variance rows of `requests` (with their bases), `seeds` replicates each, measured by
@@ -70,6 +81,9 @@ pub fn variance_ratios(
                 ratio_se: r.boxes.iter().map(|l| l.ratio_se).collect(),
                 mean_ratio: r.means.iter().map(|m| m.ratio).collect(),
                 mean_ratio_se: r.means.iter().map(|m| m.ratio_se).collect(),
+                diagonal_ratio: r.diagonal.iter().map(|m| m.ratio).collect(),
+                diagonal_ratio_se: r.diagonal.iter().map(|m| m.ratio_se).collect(),
+                translate_pairs: r.translates.map(|d| [d.translate_pairs, d.pairs]),
             }
         })
         .collect()

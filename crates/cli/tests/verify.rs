@@ -354,7 +354,7 @@ fn equivalent_to_owen_is_a_check_with_its_seeds_margin_and_verdict() {
     let text = String::from_utf8_lossy(&o.stdout);
     assert!(text.contains("equivalent-to-owen"), "{text}");
     assert!(
-        text.contains("FAIL equivalent-to-owen: estimator variance"),
+        text.contains("FAIL equivalent-to-owen: estimator variances and diagonal-cell"),
         "{text}"
     );
     let cert: serde_json::Value =
@@ -404,9 +404,12 @@ fn equivalent_to_owen_is_a_check_with_its_seeds_margin_and_verdict() {
 
 /// One fixed table, many seeds (issue 58, item 3): `art-owen-16p:table-seed=7` judged by the
 /// battery over seeds that only key roots and shifts, and the equivalence to Owen repeated
-/// with that one table; its certificate passes the audit.
+/// with that one table. Every law check passes and every variance is Owen's within ±10%, but
+/// the fourth diagonal moment is not: in about 1 pair of dimensions in 4,096 the two root
+/// symbols and input-shift digits agree, the two scrambles are translates at the top digit,
+/// and the check says so. Its certificate passes the audit.
 #[test]
-fn a_fixed_table_keyed_by_the_seeds_passes_the_battery_and_is_equivalent_to_owen() {
+fn a_fixed_table_keyed_by_the_seeds_has_owens_variances_but_not_its_fourth_moment() {
     let dir = tempfile::tempdir().unwrap();
     let cert = dir.path().join("fixed.json");
     let o = gartowen(&[
@@ -421,22 +424,57 @@ fn a_fixed_table_keyed_by_the_seeds_passes_the_battery_and_is_equivalent_to_owen
     let out = String::from_utf8_lossy(&o.stdout);
     assert_eq!(
         o.status.code(),
-        Some(0),
+        Some(1),
         "{out}{}",
         String::from_utf8_lossy(&o.stderr)
     );
     assert!(out.contains("art-owen-16p:table=256:table-seed=7"), "{out}");
-    assert!(out.contains("equivalent within ±10%"), "{out}");
     let doc: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&cert).unwrap()).unwrap();
     let checks = doc["result"]["implementations"][0]["checks"]
         .as_array()
         .unwrap();
+    assert!(
+        checks
+            .iter()
+            .filter(|c| c["check"] != "equivalent-to-owen")
+            .all(|c| c["verdict"] == "pass" || c["verdict"] == "measured"),
+        "{checks:?}"
+    );
     let equivalence = checks
         .iter()
         .find(|c| c["check"] == "equivalent-to-owen")
         .unwrap();
-    assert_eq!(equivalence["verdict"], "pass", "{equivalence}");
+    assert_eq!(equivalence["verdict"], "fail", "{equivalence}");
+    let detail = equivalence["detail"].as_str().unwrap();
+    for statistic in [
+        "mean dim 0",
+        "mean dim 1",
+        "diagonal moment 2",
+        "box level 1",
+    ] {
+        assert!(
+            detail.contains(&format!("{statistic}: ratio"))
+                && detail
+                    .split(&format!("{statistic}: ratio"))
+                    .nth(1)
+                    .unwrap()
+                    .split(';')
+                    .next()
+                    .unwrap()
+                    .contains("equivalent within ±10%"),
+            "{statistic}: {detail}"
+        );
+    }
+    let fourth = detail.split("diagonal moment 4: ratio").nth(1).unwrap();
+    assert!(
+        fourth.split(';').next().unwrap().contains("different"),
+        "{detail}"
+    );
+    assert!(
+        detail.contains("dimension pairs were translates of each other at the top digit"),
+        "{detail}"
+    );
     let audit = gartowen(&["certificate", "check", cert.to_str().unwrap()]);
     assert_eq!(
         audit.status.code(),

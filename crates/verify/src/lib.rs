@@ -21,6 +21,7 @@ pub mod battery;
 pub mod candidate;
 pub mod certificate;
 pub mod collisions;
+pub mod diagonal_cells;
 pub mod dimensions;
 pub mod equivalence;
 pub mod error;

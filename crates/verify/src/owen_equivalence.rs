@@ -21,7 +21,16 @@
 //! Cov = (1 − s²)/12 − (s/b)²·(b + 1)/12 (the common prefix uniform on the grid, digit r a
 //! uniform pair of distinct digits, the rest independent and uniform), and Cov = 1/12 for equal
 //! inputs. A digital shift keeps y_i ⊕ y_k fixed and misses it by far.
+//!
+//! **What no variance can see.** Every statistic above reads pairs of points, and a node
+//! permutation uniform over AGL(q,2) has S_b's pair law. The diagonal-cell moments
+//! ([`crate::diagonal_cells`]) read the fourth moment of an estimate's error, which tells them
+//! apart (exactly 5/4 of Owen's value in every base ≥ 8).
 
+use crate::diagonal_cells::{
+    diagonal_moments, diagonal_probes, diagonal_samples, translate_diagnosis, DiagonalMoment,
+    TranslateDiagnosis,
+};
 use crate::equivalence::{judge, Equivalence, EquivalenceSettings, EquivalenceVerdict};
 use crate::error::BatteryError;
 use crate::level::Level;
@@ -127,13 +136,17 @@ pub struct MeanVariance {
     pub ratio_se: f64,
 }
 
-/// Both statistics of one implementation.
+/// The statistics of one implementation.
 #[derive(Debug, Clone, PartialEq)]
 pub struct VarianceRatios {
     /// Box levels 1, 2, 3.
     pub boxes: Vec<LevelVariance>,
     /// The coordinate means of dimensions 0 and 1.
     pub means: Vec<MeanVariance>,
+    /// The diagonal-cell moments of orders 2 and 4 ([`crate::diagonal_cells`]).
+    pub diagonal: Vec<DiagonalMoment>,
+    /// Their translate-pair diagnosis (base ≥ 8).
+    pub translates: Option<TranslateDiagnosis>,
 }
 
 /// The variance ratios of the instances `with_seed(0..seeds)` in `base`, on 32-bit words
@@ -148,14 +161,19 @@ pub fn variance_ratios(
     let points = fixed_points();
     let q = base.q();
     let up = width.bits().saturating_sub(32);
-    let probes: Vec<Probe> = (0..2u32)
+    let mut probes: Vec<Probe> = (0..2u32)
         .map(|dim| Probe {
             dim,
             words: points.iter().map(|p| p[dim as usize] << up).collect(),
             seeds,
         })
         .collect();
+    let first_diagonal = probes.len();
+    probes.extend(diagonal_probes(base, width, seeds));
     let outputs = evaluate(with_seed, width, 0, &probes)?;
+    let samples = diagonal_samples(&outputs, first_diagonal, base, width);
+    let diagonal = diagonal_moments(&samples, base);
+    let translates = translate_diagnosis(&samples, base);
     let columns = |n: usize| -> Vec<Vec<f64>> {
         (0..n).map(|_| Vec::with_capacity(seeds as usize)).collect()
     };
@@ -209,7 +227,12 @@ pub fn variance_ratios(
             }
         })
         .collect();
-    Ok(VarianceRatios { boxes, means })
+    Ok(VarianceRatios {
+        boxes,
+        means,
+        diagonal,
+        translates,
+    })
 }
 
 fn rational_to_f64(v: &num_rational::BigRational) -> f64 {
@@ -217,9 +240,10 @@ fn rational_to_f64(v: &num_rational::BigRational) -> f64 {
     v.to_f64().unwrap_or(f64::NAN)
 }
 
-/// The equivalence judgement of every statistic that can be judged: the coordinate means, and
-/// each box level with a ratio and at least [`MIN_EXPECTED_HITS`] expected hits in base 2^`q`
-/// (family: the statistics judged). Names: `mean dim J`, `box level K`.
+/// The equivalence judgement of every statistic that can be judged: the coordinate means, the
+/// diagonal-cell moments, and each box level with a ratio and at least [`MIN_EXPECTED_HITS`]
+/// expected hits in base 2^`q` (family: the statistics judged). Names: `mean dim J`,
+/// `diagonal moment K`, `box level K`.
 pub fn judge_statistics(
     ratios: &VarianceRatios,
     q: u32,
@@ -231,6 +255,12 @@ pub fn judge_statistics(
         .iter()
         .map(|m| (format!("mean dim {}", m.dim), m.ratio, m.ratio_se))
         .collect();
+    known.extend(
+        ratios
+            .diagonal
+            .iter()
+            .map(|m| (format!("diagonal moment {}", m.order), m.ratio, m.ratio_se)),
+    );
     known.extend(
         ratios
             .boxes
@@ -311,6 +341,9 @@ pub fn check_equivalent_to_owen(
                     })
                     .collect();
                 parts.extend(unjudged);
+                if let Some(d) = ratios.translates.filter(|d| d.translate_pairs > 0) {
+                    parts.push(format!("diagonal diagnosis: {}", d.words()));
+                }
                 (
                     if all_equivalent {
                         Verdict::Pass
@@ -318,7 +351,7 @@ pub fn check_equivalent_to_owen(
                         Verdict::Fail
                     },
                     format!(
-                        "estimator variance / exact Owen variance (base {}, {seeds} seeds, margin ±{:.0}%, α = {}, 'different' Bonferroni over {} statistics): {}",
+                        "estimator variances and diagonal-cell error moments / exact Owen values (base {}, {seeds} seeds, margin ±{:.0}%, α = {}, 'different' Bonferroni over {} statistics): {}",
                         base.base(),
                         margin * 100.0,
                         crate::equivalence::DEFAULT_ALPHA,
@@ -427,6 +460,45 @@ mod tests {
     }
 
     #[test]
+    fn the_fourth_diagonal_moment_tells_affine_nodes_from_owen_where_variances_cannot() {
+        // Fixed seeds 0..10,000 (the quick level's), base 16, α = 0.05, margin ±10%: the
+        // exact oracle's diagonal moments are equivalent; the affine variant (each node uniform
+        // in AGL(4,2), 2-transitive, so every variance is Owen's) has its second moment
+        // equivalent and its fourth different (exact ratio 5/4), so the check fails.
+        let b16 = PowerOfTwoBase::B16;
+        let verdicts = |variant| {
+            let ratios =
+                variance_ratios(oracle(b16, variant).as_ref(), b16, Width::W32, 10_000).unwrap();
+            let judged = judge_statistics(&ratios, 4, 10_000, 0.1);
+            let of = |name: &str| judged.iter().find(|(n, _)| n == name).unwrap().1.clone();
+            (of("diagonal moment 2"), of("diagonal moment 4"))
+        };
+        let (m2, m4) = verdicts(OwenVariant::Uniform);
+        assert_eq!(m2.verdict, EquivalenceVerdict::Equivalent, "{m2:?}");
+        assert_eq!(m4.verdict, EquivalenceVerdict::Equivalent, "{m4:?}");
+        let (m2, m4) = verdicts(OwenVariant::Affine);
+        assert_eq!(m2.verdict, EquivalenceVerdict::Equivalent, "{m2:?}");
+        assert_eq!(m4.verdict, EquivalenceVerdict::Different, "{m4:?}");
+        assert!((1.1..1.4).contains(&m4.ratio), "{m4:?}");
+        let affine = check_equivalent_to_owen(
+            oracle(b16, OwenVariant::Affine).as_ref(),
+            b16,
+            Width::W32,
+            10_000,
+            0.1,
+        );
+        assert_eq!(affine.verdict, Verdict::Fail);
+        assert!(
+            affine.detail.contains("diagonal moment 4: ratio"),
+            "{}",
+            affine.detail
+        );
+        // A nested digital shift in base 16: every point on one diagonal, second moment 15×.
+        let (m2, _) = verdicts(OwenVariant::Xor);
+        assert!((m2.ratio - 15.0).abs() < 1e-9, "{m2:?}");
+    }
+
+    #[test]
     fn too_few_seeds_is_a_failure_that_says_so() {
         let b16 = PowerOfTwoBase::B16;
         let c = check_equivalent_to_owen(
@@ -529,13 +601,20 @@ mod tests {
                 ratio: 0.5,
                 ratio_se: 0.01,
             }],
+            diagonal: vec![DiagonalMoment {
+                order: 4,
+                ratio: 1.25,
+                ratio_se: 0.05,
+            }],
+            translates: None,
         };
         // Base 4, 1000 seeds: level 1 expects 16,000 hits (judged), level 3 1,000 (not).
         let judged = judge_statistics(&ratios, 2, 1000, 0.1);
         let names: Vec<&str> = judged.iter().map(|(n, _)| n.as_str()).collect();
-        assert_eq!(names, ["mean dim 0", "box level 1"]);
+        assert_eq!(names, ["mean dim 0", "diagonal moment 4", "box level 1"]);
         assert!((judged[0].1.log_se - 0.02).abs() < 1e-12);
-        assert!((judged[1].1.log_se - 0.05).abs() < 1e-12);
-        assert_eq!(judged[1].1.settings.family, 2);
+        assert!((judged[1].1.log_se - 0.04).abs() < 1e-12);
+        assert!((judged[2].1.log_se - 0.05).abs() < 1e-12);
+        assert_eq!(judged[2].1.settings.family, 3);
     }
 }

@@ -135,6 +135,11 @@ pub fn build_report(
         .collect();
     // The Q-ART paper's variant, judged against translation-only Q-ART as well as Owen.
     with_base.push(("q-art-4:compose=linear".into(), 4));
+    for (control, base) in crate::equivalence::CONTROLS {
+        if !with_base.iter().any(|(r, _)| r == control) {
+            with_base.push((control.into(), base));
+        }
+    }
     let owen_variance = crate::fidelity::variance_ratios(
         registry,
         &with_base,

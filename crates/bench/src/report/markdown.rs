@@ -141,6 +141,7 @@ pub fn markdown(report: &Report, figures: &[String], regressions: Option<&[Regre
         Some(format!("{} / {}", family("node-law"), family("pair-law")))
     });
     md += &crate::equivalence::markdown(&report.equivalence);
+    md += &crate::equivalence::translate_markdown(&report.owen_variance);
     md += "\n## Discrepancy (Figure 2 data): mean L2-star D² of sz16\n\nMeans over the seeds \
            shown, ± 2 standard errors; two methods whose intervals overlap are not told apart by \
            this many seeds. The spread is max / min over the 15 pairs (0, j) of the mean 2-D D², ± 2 SE \
