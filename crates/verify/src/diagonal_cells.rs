@@ -23,6 +23,7 @@
 //! digits when q ≥ 3 (coplanar or not), so E[(F)_4] = 2 and E[(F − 1)^4] = 5: a 25% excess in
 //! every base ≥ 8, with the second moment exactly Owen's. A translation-only node (a nested
 //! digital shift in base b) has F_c = b for one c and 0 for the rest: second moment b − 1.
+//! In base 2 both permutations of a digit give the same moments, so base 2 is not read.
 
 use crate::sampling::{Outputs, Probe};
 use gartowen_core::{PowerOfTwoBase, SplitMix64, Width};
@@ -202,14 +203,20 @@ impl TranslateDiagnosis {
     /// The diagnosis in words, for a check's detail: the translate pairs against Owen's
     /// expectation, and the fourth moment of the other pairs.
     pub fn words(&self) -> String {
+        let others = if self.translate_pairs == self.pairs {
+            "no other pair was read".to_string()
+        } else {
+            format!(
+                "the other pairs' fourth moment is {:.3} of Owen's",
+                self.fourth_ratio_others
+            )
+        };
         format!(
             "{} of {} dimension pairs were translates of each other at the top digit (all b \
-             points on one diagonal; Owen expects {:.2e}), the other pairs' fourth moment is \
-             {:.3} of Owen's",
+             points on one diagonal; Owen expects {:.2e}), {others}",
             self.translate_pairs,
             self.pairs,
             self.owen_rate * self.pairs as f64,
-            self.fourth_ratio_others
         )
     }
 }
@@ -349,6 +356,12 @@ mod tests {
             d.words()
         );
         assert_eq!(translate_diagnosis(&[sample], PowerOfTwoBase::B4), None);
+        let all = translate_diagnosis(&[all_translates], b8).unwrap();
+        assert!(
+            all.words().ends_with("no other pair was read"),
+            "{}",
+            all.words()
+        );
         // The probes after `first` are read, at 64 bits too.
         let wide = diagonal_probes(b8, Width::W64, 1);
         let mut outputs: Outputs = vec![vec![vec![0; 3]]];

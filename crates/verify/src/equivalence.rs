@@ -67,18 +67,24 @@ impl EquivalenceSettings {
     }
 }
 
-/// One statistic's equivalence judgement.
+/// One statistic's equivalence judgement. JSON writes a value that is not finite (z of a
+/// statistic with no spread, an unusable ratio) as `null`, and reads `null` back as NaN.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Equivalence {
     /// The estimated ratio implementation / reference.
+    #[serde(deserialize_with = "null_as_nan")]
     pub ratio: f64,
     /// Standard error of ln(ratio).
+    #[serde(deserialize_with = "null_as_nan")]
     pub log_se: f64,
     /// The (1 − 2α) interval of the ratio (the TOST interval).
+    #[serde(deserialize_with = "nulls_as_nan")]
     pub tost_interval: [f64; 2],
     /// The (1 − α/m) two-sided interval of the ratio (the difference interval).
+    #[serde(deserialize_with = "nulls_as_nan")]
     pub difference_interval: [f64; 2],
-    /// z = ln(ratio) / se.
+    /// z = ln(ratio) / se (infinite when every seed gave the same value and it is not 1).
+    #[serde(deserialize_with = "null_as_nan")]
     pub z: f64,
     /// The verdict.
     pub verdict: EquivalenceVerdict,
@@ -89,9 +95,21 @@ pub struct Equivalence {
     pub seeds_needed: Option<u64>,
     /// The smallest relative change (r − 1, as a fraction) the difference test detects with
     /// 80% power at this standard error.
+    #[serde(deserialize_with = "null_as_nan")]
     pub detectable: f64,
     /// The settings judged under.
     pub settings: EquivalenceSettings,
+}
+
+/// Reads a JSON number, or `null` (what serde_json writes for NaN and ±∞) as NaN.
+fn null_as_nan<'de, D: serde::Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
+    Ok(Option::<f64>::deserialize(d)?.unwrap_or(f64::NAN))
+}
+
+/// [`null_as_nan`] for an interval.
+fn nulls_as_nan<'de, D: serde::Deserializer<'de>>(d: D) -> Result<[f64; 2], D::Error> {
+    let [a, b] = <[Option<f64>; 2]>::deserialize(d)?;
+    Ok([a.unwrap_or(f64::NAN), b.unwrap_or(f64::NAN)])
 }
 
 fn z_upper(p: f64) -> f64 {
@@ -182,6 +200,25 @@ impl Equivalence {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_statistic_without_spread_is_judged_and_its_json_reads_back() {
+        let settings = EquivalenceSettings::new(0.1, 0.05, 3).unwrap();
+        // Every seed gave 15× Owen's value (a translation-only scramble): different, z = ∞.
+        let off = judge(15.0, 0.0, 100, settings);
+        assert_eq!(off.verdict, EquivalenceVerdict::Different);
+        assert_eq!(off.z, f64::INFINITY);
+        // Every seed gave Owen's value exactly: equivalent, z = 0/0.
+        let on = judge(1.0, 0.0, 100, settings);
+        assert_eq!(on.verdict, EquivalenceVerdict::Equivalent);
+        for e in [off, on, judge(f64::NAN, 0.1, 100, settings)] {
+            let text = serde_json::to_string(&e).unwrap();
+            let back: Equivalence = serde_json::from_str(&text).unwrap();
+            assert_eq!(back.verdict, e.verdict, "{text}");
+            assert!(back.ratio == e.ratio || (back.ratio.is_nan() && e.ratio.is_nan()));
+            assert!(back.z.is_nan() || back.z == e.z);
+        }
+    }
 
     fn settings(family: usize) -> EquivalenceSettings {
         EquivalenceSettings::new(0.10, 0.05, family).unwrap()

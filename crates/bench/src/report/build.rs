@@ -127,6 +127,7 @@ pub fn build_report(
     progress.advance(1);
     progress.message("discrepancy curves");
     let discrepancy = discrepancy_curves(registry, config.quick);
+    let sobol_owen = crate::curves::sobol_owen_curve(registry, config.quick);
     progress.advance(1);
     progress.message("Owen variance, trade-off, scenes");
     let mut with_base: Vec<(String, u32)> = speed
@@ -187,6 +188,7 @@ pub fn build_report(
         speed,
         quality,
         discrepancy,
+        sobol_owen: Some(sobol_owen),
         owen_variance,
         tradeoff,
         equivalence,

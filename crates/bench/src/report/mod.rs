@@ -131,6 +131,9 @@ pub struct Report {
     pub quality: Vec<QualityRow>,
     /// Figure 2 data.
     pub discrepancy: Vec<DiscrepancyCurve>,
+    /// Figure 2b's baseline: Sobol + exact binary Owen (absent in older reports).
+    #[serde(default)]
+    pub sobol_owen: Option<DiscrepancyCurve>,
     /// Estimator variance against the exact Owen variance, per scrambler (empty in reports
     /// written before it existed).
     #[serde(default)]

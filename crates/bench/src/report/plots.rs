@@ -261,11 +261,15 @@ pub fn write_figures(
         let base = random(2);
         bands.push(exact(&base));
         pair_series.push(base);
+        if let Some((series, band)) = report.sobol_owen.as_ref().map(sobol_pairs_baseline) {
+            pair_series.push(series);
+            bands.push(band);
+        }
         let name = format!("figure2_pairs_{}.png", file_stem(&c.scrambler));
         loglog_lines_banded(
             &dir.join(&name),
             &format!(
-                "Figure 2b: mean 2-D L2-star D² of sz16 pairs (0, j), {} ({}–{} seeds, ±2 SE)",
+                "Figure 2b: mean 2-D L2-star D² of sz16 pairs (0, j), {} ({}–{} seeds, ±2 SE); baselines: random points, Sobol + binary Owen's pairs",
                 c.scrambler,
                 c.seeds,
                 c.seeds_per_n.iter().max().unwrap_or(&c.seeds)
@@ -344,7 +348,56 @@ fn two_se(mean: f64, se: Option<f64>) -> (f64, f64) {
     (mean - 2.0 * se, mean + 2.0 * se)
 }
 
+/// Figure 2b's Sobol + Owen baseline: the mean over its pairs (0, j) at each N, banded by the
+/// smallest and largest pair (the spread of a good binary sequence's pairs, not an error bar).
+pub fn sobol_pairs_baseline(c: &DiscrepancyCurve) -> (Series, Vec<(f64, f64)>) {
+    let mut points = Vec::new();
+    let mut band = Vec::new();
+    for (n, values) in c.n.iter().zip(&c.pair_values) {
+        if values.is_empty() {
+            continue;
+        }
+        let mean = values.iter().sum::<f64>() / values.len() as f64;
+        let lo = values.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        points.push((*n as f64, mean));
+        band.push((lo, hi));
+    }
+    (
+        Series {
+            label: format!("Sobol + {} pairs (0, j): mean, band min–max", c.scrambler),
+            points,
+        },
+        band,
+    )
+}
+
 /// The band of a series known exactly (an expectation, not an estimate): its own line.
 fn exact(series: &Series) -> Vec<(f64, f64)> {
     series.points.iter().map(|&(_, m)| (m, m)).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_sobol_baseline_is_the_pairs_mean_banded_by_the_extreme_pairs() {
+        let c = DiscrepancyCurve {
+            scrambler: "owen-oracle:base=2".into(),
+            n: vec![16, 32, 64],
+            joint: vec![0.0; 3],
+            pairs: vec![[0, 1], [0, 2], [0, 3]],
+            pair_values: vec![vec![1.0, 2.0, 6.0], vec![], vec![0.5, 0.25, 0.75]],
+            seeds: 8,
+            joint_se: vec![],
+            pair_se: vec![],
+            seeds_per_n: vec![],
+        };
+        let (series, band) = sobol_pairs_baseline(&c);
+        // A size without pairs is skipped, not drawn at 0.
+        assert_eq!(series.points, [(16.0, 3.0), (64.0, 0.5)]);
+        assert_eq!(band, [(1.0, 6.0), (0.25, 0.75)]);
+        assert!(series.label.starts_with("Sobol + owen-oracle:base=2 pairs"));
+    }
 }

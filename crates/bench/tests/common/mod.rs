@@ -44,6 +44,7 @@ pub fn report(slope: f64, rmse_last: f64, ratio: f64) -> Report {
         }],
         quality: vec![],
         discrepancy: vec![],
+        sobol_owen: None,
         owen_variance: vec![],
         tradeoff: vec![],
         equivalence: vec![],
