@@ -262,7 +262,8 @@ pub fn markdown(rows: &[EquivalenceRow]) -> String {
     let s = first.result.settings;
     let mut md = format!(
         "\n## Equivalence to full-tree Owen\n\n\
-         Each ART variant, and each control (a binary digital shift; Owen with AGL(4,2) \
+         Each ART variant, a renderer's fixed table (`{fixed}`: one table, each seed keying \
+         roots and shifts only), and each control (a binary digital shift; Owen with AGL(4,2) \
          nodes), against the Owen scramble of its base, as a ratio (variant / Owen). \
          **equivalent within ±{pct:.0}%**: the {tost:.0}% interval of the ratio lies inside \
          [{lo:.2}, {hi:.2}] (two one-sided tests at level α = {a}; the verdict for all of a \
@@ -279,6 +280,7 @@ pub fn markdown(rows: &[EquivalenceRow]) -> String {
          a pair of dimensions whose scrambles are translates); D²: the mean L2-star D² of sz16 against \
          `owen-oracle` of the same base with its own seeds.\n\n\
          | scrambler | equivalent | different | inconclusive |\n|---|---|---|---|\n",
+        fixed = crate::curves::FIXED_TABLE,
         pct = s.margin * 100.0,
         tost = (1.0 - 2.0 * s.alpha) * 100.0,
         lo = 1.0 - s.margin,

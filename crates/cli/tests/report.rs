@@ -39,6 +39,7 @@ fn quick_report_writes_figures_and_the_baseline_gate_works() {
         "figure2_pairs_art-owen-2.png",
         "figure2_pairs_art-owen-16p.png",
         "figure2_pairs_owen-oracle_base-16.png",
+        "figure2_pairs_art-owen-16p_table-seed-7.png",
         "figure2_spread.png",
     ] {
         let bytes = std::fs::read(path(&format!("a/{f}"))).unwrap();
@@ -119,6 +120,9 @@ fn quick_report_writes_figures_and_the_baseline_gate_works() {
         ("digital-shift", "variance of the mean, dim 0"),
         ("owen-oracle:affine:base=16", "diagonal moment 4"),
         ("art-owen-16p", "diagonal moment 4"),
+        // A renderer's fixed table, judged like the variants (issue 58, item 3).
+        ("art-owen-16p:table-seed=7", "variance of the mean, dim 0"),
+        ("art-owen-16p:table-seed=7", "D² joint 16-D"),
     ] {
         assert!(
             verdicts

@@ -136,6 +136,7 @@ pub fn build_report(
         .collect();
     // The Q-ART paper's variant, judged against translation-only Q-ART as well as Owen.
     with_base.push(("q-art-4:compose=linear".into(), 4));
+    with_base.push((crate::curves::FIXED_TABLE.into(), 16));
     for (control, base) in crate::equivalence::CONTROLS {
         if !with_base.iter().any(|(r, _)| r == control) {
             with_base.push((control.into(), base));
