@@ -3,6 +3,7 @@
 
 mod art_golden;
 mod batch_paths;
+mod docs_paths;
 mod expected_discrepancy;
 mod external;
 mod extracted_checker;

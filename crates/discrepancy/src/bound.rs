@@ -15,7 +15,7 @@
 //!   ones, and D² = c0 + c1·S1/N + S2/N² is combined exactly in rationals, so the relative
 //!   error of the returned f64 is (|value − Vq| + E)/(|Vq| − E).
 //!
-//! Not in Coq, argued here and checked by exact rationals in `tests/exactness.rs`: which
+//! Not in Coq, argued here and checked by exact rationals in `crates/discrepancy/tests/exactness.rs`: which
 //! factor computations are exact. For coordinates of at most [`crate::EXACT_FLOAT_BITS`] = 50
 //! fractional bits every ingredient (1 − x, 1 + x, x − ½, |x − y|, 1 − max, CD's pair factor,
 //! |x − y| − ½) is a multiple of 2^-51 below 4 in magnitude, hence a double, so the rounded
