@@ -118,6 +118,31 @@ fn imitations_claiming_owen_fail_with_the_check_and_depth_named() {
     );
     assert!(text.contains("FAIL flip-rank: deviation"), "{text}");
     assert!(text.contains("profile (depth 0→)"), "{text}");
+    // The failures say what a practitioner would: the digital shift's flips per depth, the
+    // hashes' flips tied across depths, node paths explained, no p-value printed as 0.
+    let line = |name: &str, check: &str| {
+        let block = text.split(name).nth(1).unwrap();
+        block
+            .lines()
+            .find(|l| l.contains(&format!("FAIL {check}")))
+            .unwrap_or_else(|| panic!("{name} {check}: {text}"))
+            .to_string()
+    };
+    assert!(
+        line("digital-shift", "flip-rank").contains("(a digital shift)"),
+        "{text}"
+    );
+    assert!(
+        line("lk-hash-improved", "flip-rank").contains("flips of different depths are tied"),
+        "{text}"
+    );
+    assert!(
+        line("digital-shift", "pair-law")
+            .contains("siblings at depth 1: node 0 vs node 1 (p < 1e-300"),
+        "{text}"
+    );
+    assert!(!text.contains("p = 0.00e0"), "{text}");
+    assert!(text.contains("nodes are named by their digit path from the root"));
     // A claim that does not parse is bad usage.
     let o = gartowen(&["verify", "--impl", "lk-hash", "--claim", "owenish"]);
     assert_eq!(o.status.code(), Some(2));

@@ -94,6 +94,25 @@ struct Column {
     bit: u32,
 }
 
+/// What a practitioner would call a relation among node flips (`None` is the constant
+/// column): two nodes of one depth and dimension that always flip alike are what a digital
+/// shift does (one flip per depth for every node); flips tied across depths are what a hash
+/// of the path or a matrix scramble does.
+fn relation_diagnosis(terms: &[Option<Column>]) -> Option<&'static str> {
+    let nodes: Vec<&Column> = terms.iter().flatten().collect();
+    let first = nodes.first()?;
+    let same_depth = nodes
+        .iter()
+        .all(|c| c.depth == first.depth && c.dim == first.dim && c.bit == first.bit);
+    if nodes.len() == 2 && terms.len() == 2 && same_depth {
+        Some("two nodes of one depth always flip alike, as when all nodes of a depth share one flip (a digital shift)")
+    } else if nodes.iter().any(|c| c.depth != first.depth) {
+        Some("flips of different depths are tied linearly (a hash of the path or a matrix scramble, not independent nodes)")
+    } else {
+        None
+    }
+}
+
 /// GF(2) rank of node bits over seeds; one sub-test per depth (the relations that first
 /// appear when that depth's columns join).
 fn rank_analyse(cfg: &LawConfig, plan: RankPlan, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
@@ -200,9 +219,11 @@ fn rank_analyse(cfg: &LawConfig, plan: RankPlan, outputs: &[&[Vec<u64>]]) -> Vec
                     )
                 } else {
                     format!(
-                        "π(0) bits of depths ≤ {depth}, dims 0-1: {deficient} exact relation(s), e.g. {} = 0{}",
+                        "π(0) bits of depths ≤ {depth}, dims 0-1: {deficient} exact relation(s), e.g. {} = 0{}{}",
                         shown.join(" ⊕ "),
-                        if more > 0 { format!(" (+{more} more terms)") } else { String::new() }
+                        if more > 0 { format!(" (+{more} more terms)") } else { String::new() },
+                        relation_diagnosis(&relation.iter().map(|&k| columns[k].0.clone()).collect::<Vec<_>>())
+                            .map_or(String::new(), |d| format!(": {d}"))
                     )
                 },
                 depth: Some(depth),
@@ -264,5 +285,34 @@ impl LawFamily for FlipRank {
                 })
                 .collect(),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn node(dim: u32, depth: u32, prefix: u64) -> Option<Column> {
+        Some(Column {
+            dim,
+            depth,
+            prefix,
+            bit: 0,
+        })
+    }
+
+    #[test]
+    fn relations_are_diagnosed_as_a_practitioner_would() {
+        let shift = relation_diagnosis(&[node(0, 1, 0), node(0, 1, 1)]).unwrap();
+        assert!(shift.contains("a digital shift"), "{shift}");
+        let across = relation_diagnosis(&[node(0, 0, 0), node(0, 1, 0), node(0, 1, 1)]).unwrap();
+        assert!(across.contains("different depths"), "{across}");
+        // Two nodes of one depth in different dimensions, or with the constant: no name.
+        assert_eq!(relation_diagnosis(&[node(0, 1, 0), node(1, 1, 0)]), None);
+        assert_eq!(
+            relation_diagnosis(&[None, node(0, 1, 0), node(0, 1, 1)]),
+            None
+        );
+        assert_eq!(relation_diagnosis(&[]), None);
     }
 }

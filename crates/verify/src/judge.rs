@@ -107,7 +107,7 @@ fn judge_family(
         None => "not applicable".to_string(),
         Some(w) => {
             let mut d = format!(
-                "{}: {} of {} {}sub-tests deviate at α' = {:.1e}; worst: {} (p = {:.2e}; {})",
+                "{}: {} of {} {}sub-tests deviate at α' = {:.1e}; worst: {} (p {}; {})",
                 match verdict {
                     Verdict::Pass => "no deviation detected at this power",
                     Verdict::Fail => "deviation",
@@ -122,7 +122,7 @@ fn judge_family(
                 },
                 if any_claimed { alpha } else { measure_alpha },
                 w.name,
-                w.p_value,
+                p_words(w.p_value),
                 w.power
             );
             if measured_tests > 0 {
@@ -187,11 +187,29 @@ pub fn profile(checks: &[CheckResult]) -> Vec<(String, String)> {
         .collect()
 }
 
+/// A p-value for people: "= 3.20e-5", and "< 1e-300" below 1e-300, where a double keeps no
+/// meaningful digits (the tail probabilities underflow to 0 or to subnormals there).
+pub fn p_words(p: f64) -> String {
+    if p < 1e-300 {
+        "< 1e-300".to_string()
+    } else {
+        format!("= {p:.2e}")
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::subtest::Requirement;
     use gartowen_core::NodeGroup;
+
+    #[test]
+    fn p_values_below_1e_300_are_said_as_a_bound() {
+        assert_eq!(p_words(3.2e-5), "= 3.20e-5");
+        assert_eq!(p_words(1e-300), "= 1.00e-300");
+        assert_eq!(p_words(1.3e-318), "< 1e-300");
+        assert_eq!(p_words(0.0), "< 1e-300");
+    }
 
     fn sub(name: &str, requires: Requirement, p_value: f64) -> SubTest {
         SubTest {

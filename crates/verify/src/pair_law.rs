@@ -100,7 +100,7 @@ fn pair_analyse(cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
             }
             SubTest::chi(
                 format!(
-                    "{} at depth {} ({} | {})",
+                    "{} at depth {}: node {} vs node {}",
                     p.relation,
                     p.depth,
                     prefix_name(&p.a.1),

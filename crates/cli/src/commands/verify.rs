@@ -559,7 +559,8 @@ fn print_table(reports: &[ImplReport]) -> Result<(), CliError> {
     }
     crate::outln!(
         "law checks: family-wise α = {} (Bonferroni); pass = no deviation detected at the stated power; \
-         profile: . none detected, x deviation, ? not measured, - not tested",
+         profile: . none detected, x deviation, ? not measured, - not tested; \
+         nodes are named by their digit path from the root (0.1 = child 1 of child 0, in hex digits)",
         gartowen::verify::stats::FAMILY_ALPHA
     );
     Ok(())
