@@ -248,3 +248,82 @@ fn external_programs_are_swept_over_pipes_and_a_broken_one_is_named() {
         .contains("request 1"));
     assert!(v["result"]["pieces"].as_array().unwrap().is_empty());
 }
+
+/// `--estimate` sizes a sweep from a timed probe: every implementation gets a rate, the run's
+/// words (dimensions × 2^32) and a time per shard count; nothing is written, and it needs the
+/// exhaustive level and --dims. An external program is probed through its pipes.
+#[test]
+fn estimate_sizes_the_sweep_from_a_probe_and_writes_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = gartowen(&[
+        "verify",
+        "--level",
+        "exhaustive",
+        "--dims",
+        "0..7",
+        "--impl",
+        "lk-hash",
+        "--impl",
+        "art-owen-16p",
+        "--estimate",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let text = stdout(&o);
+    for name in ["lk-hash:", "art-owen-16p:table=256:"] {
+        let line = text
+            .lines()
+            .find(|l| l.trim_start().starts_with(name))
+            .unwrap_or_else(|| panic!("{name}: {text}"));
+        assert!(
+            line.contains("words/s")
+                && line.contains("8 dimension(s) × 4294967296 words = 3.436e10 words")
+                && line.contains("per shard (1: ")
+                && line.contains(", 64: "),
+            "{line}"
+        );
+    }
+    assert!(text.contains("in all ≈"), "{text}");
+    let ext = example(dir.path(), "lk_hash");
+    let o = gartowen(&[
+        "verify",
+        "--level",
+        "exhaustive",
+        "--dims",
+        "3",
+        "--external",
+        ext.to_str().unwrap(),
+        "--estimate",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(
+        stdout(&o).contains("1 dimension(s) × 4294967296 words"),
+        "{}",
+        stdout(&o)
+    );
+    assert_eq!(
+        std::fs::read_dir(dir.path()).unwrap().count(),
+        1,
+        "only the program"
+    );
+    // Refusals: not the exhaustive level, without --dims, with an output file.
+    let json = dir.path().join("e.json");
+    for args in [
+        &["verify", "--dims", "0", "--impl", "lk-hash", "--estimate"][..],
+        &["verify", "--impl", "lk-hash", "--estimate"][..],
+        &[
+            "verify",
+            "--level",
+            "exhaustive",
+            "--dims",
+            "0",
+            "--estimate",
+            "--json",
+            json.to_str().unwrap(),
+        ][..],
+    ] {
+        let o = gartowen(args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert!(!stderr(&o).is_empty());
+    }
+    assert!(!json.exists());
+}

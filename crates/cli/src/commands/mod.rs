@@ -3,6 +3,7 @@
 pub mod certificate;
 pub mod check;
 pub mod discrepancy;
+pub mod estimate;
 pub mod generate;
 pub mod inspect;
 pub mod list;

@@ -49,7 +49,7 @@ impl DimRange {
         self.first..=self.last
     }
 
-    fn count(&self) -> u64 {
+    pub(crate) fn count(&self) -> u64 {
         (self.last - self.first) as u64 + 1
     }
 
@@ -63,11 +63,11 @@ impl DimRange {
 }
 
 /// One implementation to sweep.
-struct Target {
-    name: String,
-    scrambler: Arc<dyn Scrambler>,
-    plan: SweepPlan,
-    pool: Option<Arc<ExternalPool>>,
+pub(crate) struct Target {
+    pub(crate) name: String,
+    pub(crate) scrambler: Arc<dyn Scrambler>,
+    pub(crate) plan: SweepPlan,
+    pub(crate) pool: Option<Arc<ExternalPool>>,
 }
 
 /// What every shard of one sweep shares (the merge refuses anything else).
@@ -99,7 +99,7 @@ struct ImplementationVerdict {
     dims: Vec<SweepVerdict>,
 }
 
-fn targets(a: &VerifyArgs) -> Result<Vec<Target>, CliError> {
+pub(crate) fn targets(a: &VerifyArgs) -> Result<Vec<Target>, CliError> {
     if let Some(command) = &a.external {
         let base = PowerOfTwoBase::from_base(a.base)
             .map_err(|e| CliError::Usage(format!("--base {}: {e}", a.base)))?;

@@ -343,6 +343,9 @@ pub fn run(a: VerifyArgs) -> Result<ExitCode, CliError> {
         }
     }
     if let Some(dims) = &a.dims {
+        if a.estimate {
+            return super::estimate::run(&a, dims);
+        }
         return super::sweep::run(&a, dims);
     }
     if a.external.is_some() && a.shard.is_some() {

@@ -70,6 +70,7 @@ pub enum NetBases {
 ///   gartowen verify --level exhaustive --dims 0..3 --impl art-owen-2 --impl lk-hash
 ///   gartowen verify --level exhaustive --dims 0..1023 --impl art-owen-2 --shard 7/32 --json s7.json
 ///   gartowen verify --level exhaustive --dims 0..3 --external ./lk_hash --base 2 --claim nested
+///   gartowen verify --level exhaustive --dims 0..1023 --external ./lk_hash --estimate   (cost first)
 ///
 /// External implementations (the protocol is in docs/external.md):
 ///   gartowen verify --external './my_scrambler --fast' --base 16 --width 32
@@ -111,6 +112,11 @@ pub struct VerifyArgs {
     /// the sampled levels (without --dims) check them.
     #[arg(long, conflicts_with_all = ["merge", "expect"])]
     pub dims: Option<String>,
+    /// With --dims: estimate what the every-word sweep will cost instead of running it, from a
+    /// timed probe of about a second per implementation (words per second on this machine),
+    /// with the time per shard for 1, 4, 16 and 64 shards. Writes nothing; exit 0.
+    #[arg(long, requires = "dims", conflicts_with_all = ["json", "junit", "shard"])]
+    pub estimate: bool,
     /// Scrambling base of the external program: a power of two 2..=256 (protocol version 1,
     /// digits in the word's bits), or any other base 3..=65535 (version 2, words are base-b
     /// digit integers below b^m; flip-rank then does not apply).
