@@ -88,7 +88,8 @@ def test_missing_mitsuba_or_libllvm_names_the_install_line():
 def test_bad_render_arguments_exit_2_naming_them(tmp_path):
     import gartowen.render as gr
     for args, fragment in [(["--scenes", "kitchen"], "unknown scene 'kitchen'"),
-                           (["--sizes", "0,16"], "--sizes"), (["--seeds", "1"], "--seeds")]:
+                           (["--sizes", "0,16"], "--sizes"), (["--seeds", "1"], "--seeds"),
+                           (["--methods", "sobol-owen,ldsampler2"], "unknown method 'ldsampler2'")]:
         r = _child(f"import sys, gartowen.render as gr; sys.exit(gr.main({args + ['--out', str(tmp_path)]!r}))")
         assert r.returncode == 2 and fragment in r.stderr and "Traceback" not in r.stderr, r.stderr
 
@@ -125,3 +126,34 @@ def test_the_quick_benchmark_and_its_fixed_table_check(tmp_path):
     for name in ("render.json", "render.md", "cornell-reference.png", "cornell-error-0.png"):
         assert (tmp_path / name).stat().st_size > 0
     assert json.loads((tmp_path / "render.json").read_text())["seeds"] == 8
+    # Each pair states the ratio it detects at power 0.9 and the seeds equivalence would need.
+    for p in doc["scenes"]["cornell"]["pairs"]:
+        assert p["detects"] > 1 and (p["seeds_for_equivalence"] is None or p["seeds_for_equivalence"] >= 1)
+
+
+def test_pair_verdicts_state_their_power_and_the_seeds_equivalence_needs():
+    import gartowen.render as gr
+    rng = np.random.default_rng(5)
+    a, b = rng.gamma(4.0, 0.25, 64), rng.gamma(4.0, 0.25, 64)
+    v = gr.verdict(a, b, 0.2, 0.05)
+    # The detectable ratio is exp((z_{α/2} + z_{0.9})·se); at 64 seeds of CV 0.5 per side,
+    # se ≈ 0.088, so about exp(3.24 · 0.088) ≈ 1.33.
+    assert 1.2 < v["detects"] < 1.5, v
+    # Equal means: the seeds equivalence needs do not depend on how many were run (se² ∝
+    # 1/seeds), so the same data twice over predicts about the same number.
+    once = gr.verdict(a, a[::-1].copy(), 0.2, 0.05)["seeds_for_equivalence"]
+    twice = gr.verdict(np.tile(a, 2), np.tile(a[::-1], 2), 0.2, 0.05)["seeds_for_equivalence"]
+    assert once is not None and 0.9 < twice / once < 1.1, (once, twice)
+    far = gr.verdict(a * 2, b, 0.2, 0.05)
+    assert far["seeds_for_equivalence"] is None and far["verdict"] == "worse"
+
+
+@needs_mitsuba
+def test_methods_select_what_runs(tmp_path):
+    import gartowen.render as gr
+    doc = gr.run(True, str(tmp_path), seeds=2, sizes=[4], log=open(os.devnull, "w"),
+                 method_keys=["sobol-owen", "independent"])
+    # In the benchmark's order, and the pair between them judged.
+    assert list(doc["scenes"]["cornell"]["methods"]) == ["mitsuba independent", "sobol + owen (binary)"]
+    assert [(p["method"], p["against"]) for p in doc["scenes"]["cornell"]["pairs"]] == [
+        ("sobol + owen (binary)", "mitsuba independent")]

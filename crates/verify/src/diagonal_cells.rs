@@ -51,11 +51,8 @@ pub fn owen_diagonal_moment(base: u32, order: u32) -> Option<f64> {
 pub fn diagonal_probes(base: PowerOfTwoBase, width: Width, seeds: u64) -> Vec<Probe> {
     let q = base.q();
     let w = width.bits();
-    let low_mask = if w - q == 64 {
-        u64::MAX
-    } else {
-        (1u64 << (w - q)) - 1
-    };
+    // w − q ≤ 63: the shift is in range.
+    let low_mask = (1u64 << (w - q)) - 1;
     let mut rng = SplitMix64::new(0x6469_6167); // "diag"
     (0..2 * DIAGONAL_PAIRS)
         .map(|dim| Probe {
@@ -305,6 +302,12 @@ mod tests {
             .iter()
             .enumerate()
             .all(|(a, w)| (w >> 29) as usize == a)));
+        // The lower digits are pseudo-random over all 29 bits, not zero or a narrower range.
+        let tails = probes
+            .iter()
+            .flat_map(|p| p.words.iter())
+            .fold(0, |acc, w| acc | (w & ((1 << 29) - 1)));
+        assert_eq!(tails, (1 << 29) - 1);
         // Identity in every dimension: all 8 points on the diagonal c = 0, so F_0 = 8 and
         // F_c = 0 otherwise: (49 + 7) / 8 = 7 and (2401 + 7) / 8 = 301.
         let identity: Outputs = vec![probes.iter().map(|p| p.words.clone()).collect()];
