@@ -67,5 +67,16 @@ for a in $used; do
     exit 1
   fi
 done
-grep '^Print Assumptions' AssumptionsFloat.v | awk '{print $3}' | tr -d . |
-  while read -r name; do echo "proofs: $name: only the standard axioms of the reals ($(echo $used | tr '\n' ' '))"; done
+# Each theorem with its own axioms (block K of the output belongs to the K-th Print).
+names=$(grep '^Print Assumptions' AssumptionsFloat.v | awk '{print $3}' | tr -d .)
+printf '%s\n' "$out" | awk '
+  /^Axioms:/ || /^Closed under the global context/ {
+    if (k) print k, list; k++; list = ""
+    if ($0 ~ /^Closed/) list = " (none)"
+    next
+  }
+  /^[A-Za-z_][A-Za-z0-9_.]*( :|$)/ { list = list " " $1 }
+  END { if (k) print k, list }' |
+  while read -r k axioms; do
+    echo "proofs: $(printf '%s\n' "$names" | sed -n "${k}p"): only standard axioms of the reals:$([ -n "$axioms" ] && echo " $axioms")"
+  done
