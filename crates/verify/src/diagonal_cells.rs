@@ -359,6 +359,18 @@ mod tests {
             d.words()
         );
         assert_eq!(translate_diagnosis(&[sample], PowerOfTwoBase::B4), None);
+        // A pair with points 0 and 1 swapped in its second dimension is no translate: F_0 = 6,
+        // F_1 = 2, the rest 0, so its fourth-moment sum is 5^4 + 1 + 6 = 632; the second
+        // moment over all 16 pairs is (15·56 + 25 + 1 + 6) / 128.
+        let mut swapped = identity.clone();
+        swapped[0][1].swap(0, 1);
+        let t = diagonal_samples(&swapped, 0, b8, Width::W32)[0];
+        assert_eq!((t.translate_pairs, t.fourth_sum_others), (15, 632.0));
+        assert_eq!(t.moments[0], (15.0 * 56.0 + 32.0) / 128.0);
+        // Its diagnosis: 632 over the 8 cells of the one other pair, against Owen's 4.
+        let d = translate_diagnosis(&[t, t, t], b8).unwrap();
+        assert_eq!((d.pairs, d.translate_pairs), (48, 45));
+        assert_eq!(d.fourth_ratio_others, 632.0 / 8.0 / 4.0);
         let all = translate_diagnosis(&[all_translates], b8).unwrap();
         assert!(
             all.words().ends_with("no other pair was read"),
@@ -392,5 +404,8 @@ mod tests {
         assert_eq!(m[1].ratio, 1.0);
         // Spread of [2, 6]: variance 8, SE 2 over the exact value 4.
         assert!((m[1].ratio_se - 0.5).abs() < 1e-12);
+        // Three seeds: [0, 3, 6] has variance 9 (divisor 2), SE √3.
+        let m = diagonal_moments(&[sample(0.0, 0.0), sample(3.0, 0.0), sample(6.0, 0.0)], b16);
+        assert!((m[0].ratio_se - 3f64.sqrt()).abs() < 1e-12, "{m:?}");
     }
 }
