@@ -193,7 +193,9 @@ pub const FIXED_TABLE: &str = "art-owen-16p:table-seed=7";
 /// The scrambler of [`sobol_owen_curve`].
 pub const SOBOL_BASELINE: &str = "owen-oracle:base=2";
 
-fn measure_curve(
+/// One curve of Figure 2: `request` scrambling the first 16 dimensions of `kind`, at
+/// [`curve_sizes`] up to `max_n` with [`curve_seeds`] seeds per size.
+pub fn measure_curve(
     registry: &Registry,
     kind: SequenceKind,
     request: &str,

@@ -498,6 +498,46 @@ mod tests {
             0.1,
         );
         assert_eq!(affine.verdict, Verdict::Fail);
+        // AGL holds translations (1 map in 20,160): the detail names the translate pairs it
+        // met; the exact oracle meets none (10⁻¹² each) and says nothing of them.
+        assert!(
+            affine.detail.contains("diagonal diagnosis: ")
+                && affine.detail.contains("of 160000 dimension pairs"),
+            "{}",
+            affine.detail
+        );
+        let uniform = check_equivalent_to_owen(
+            oracle(b16, OwenVariant::Uniform).as_ref(),
+            b16,
+            Width::W32,
+            2000,
+            0.1,
+        );
+        assert!(
+            !uniform.detail.contains("diagonal diagnosis"),
+            "{}",
+            uniform.detail
+        );
+        // Base 2: no diagonal moment is read (every permutation of two digits gives them).
+        let b2 = PowerOfTwoBase::B2;
+        let r = variance_ratios(
+            oracle(b2, OwenVariant::Uniform).as_ref(),
+            b2,
+            Width::W32,
+            50,
+        )
+        .unwrap();
+        assert!(r.diagonal.is_empty() && r.translates.is_none(), "{r:?}");
+        // Base 4 reads them, without the translate diagnosis (one permutation in six is one).
+        let b4 = PowerOfTwoBase::B4;
+        let r = variance_ratios(
+            oracle(b4, OwenVariant::Uniform).as_ref(),
+            b4,
+            Width::W32,
+            50,
+        )
+        .unwrap();
+        assert!(r.diagonal.len() == 2 && r.translates.is_none(), "{r:?}");
         assert!(
             affine.detail.contains("diagonal moment 4: ratio"),
             "{}",
