@@ -233,3 +233,25 @@ pub fn measure_curve(
         seeds_per_n,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn seeds_follow_the_budget_between_their_floors_and_ceilings() {
+        // Full: 2^24 / N², between 1,000 and 4,000 (every full-report size has 1,000 seeds).
+        assert_eq!(curve_seeds(16, false), 4000);
+        assert_eq!(curve_seeds(100, false), (1 << 24) / 10_000);
+        assert_eq!(curve_seeds(128, false), 1024);
+        assert_eq!(curve_seeds(4096, false), 1000);
+        // Quick: 2^17 / N², between 16 and 128.
+        assert_eq!(curve_seeds(16, true), 128);
+        assert_eq!(curve_seeds(64, true), 32);
+        assert_eq!(curve_seeds(256, true), 16);
+        // The Figure 2b baseline and the fixed table ride on the same requests.
+        let quick = curve_requests(true);
+        assert!(quick.contains(&(FIXED_TABLE, 256)) && quick.contains(&("art-owen-2", 256)));
+        assert_eq!(curve_requests(false)[0], ("art-owen-2", 4096));
+    }
+}

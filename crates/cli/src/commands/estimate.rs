@@ -130,5 +130,8 @@ mod tests {
         assert_eq!(duration_words(59.94), "59.9 s");
         assert_eq!(duration_words(512.0), "8.5 min");
         assert_eq!(duration_words(9000.0), "2.5 h");
+        // The boundaries belong to the larger unit.
+        assert_eq!(duration_words(120.0), "2.0 min");
+        assert_eq!(duration_words(7200.0), "2.0 h");
     }
 }
