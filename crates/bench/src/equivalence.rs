@@ -21,7 +21,7 @@
 use crate::curves::DiscrepancyCurve;
 use crate::fidelity::VarianceRow;
 use gartowen::art::registry::variant_of;
-use gartowen::battery::diagonal_cells::ORDERS;
+use gartowen::battery::diagonal_cells::{owen_translate_rate, ORDERS};
 use gartowen::battery::equivalence::{
     judge, ratio_of_means, Equivalence, EquivalenceSettings, EquivalenceVerdict,
 };
@@ -343,7 +343,7 @@ pub fn translate_markdown(rows: &[VarianceRow]) -> String {
                    | scrambler | translate pairs | pairs read | per pair | Owen's per pair |\n\
                    |---|---|---|---|---|\n";
         }
-        let owen = (1..r.base).fold(1.0, |p, k| p / f64::from(k));
+        let owen = owen_translate_rate(r.base);
         md += &format!(
             "| {} | {translates} | {pairs} | {:.2e} | {owen:.2e} |\n",
             r.scrambler,

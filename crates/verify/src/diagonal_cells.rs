@@ -172,6 +172,13 @@ pub struct TranslateDiagnosis {
     pub fourth_ratio_others: f64,
 }
 
+/// Owen's probability that a dimension pair's scrambles are translates at the top digit in
+/// base `b`: b translations among b! permutations, 1/(b − 1)! (a product, so that it
+/// underflows to 0 gracefully).
+pub fn owen_translate_rate(b: u32) -> f64 {
+    (1..b).fold(1.0, |r, k| r / f64::from(k))
+}
+
 /// The [`TranslateDiagnosis`] of `samples` in `base`: meaningful from base 8 on (in base 2
 /// every permutation is a translation, in base 4 one in six), so `None` below.
 pub fn translate_diagnosis(
@@ -186,8 +193,7 @@ pub fn translate_diagnosis(
     let translate_pairs: u64 = samples.iter().map(|s| u64::from(s.translate_pairs)).sum();
     let others = (pairs - translate_pairs) as f64 * f64::from(b);
     let fourth: f64 = samples.iter().map(|s| s.fourth_sum_others).sum();
-    // b / b! = 1 / (b − 1)!, as a product so that it underflows to 0 gracefully.
-    let owen_rate = (1..b).fold(1.0, |r, k| r / f64::from(k));
+    let owen_rate = owen_translate_rate(b);
     Some(TranslateDiagnosis {
         pairs,
         translate_pairs,
