@@ -342,11 +342,12 @@ pub fn check_equivalent_to_owen(
                     .iter()
                     .map(|(name, e)| {
                         format!(
-                            "{name}: ratio {:.3}, 90% [{:.3}, {:.3}], {}",
+                            "{name}: ratio {:.3}, 90% [{:.3}, {:.3}], {} (detects ±{:.1}% at power 0.8)",
                             e.ratio,
                             e.tost_interval[0],
                             e.tost_interval[1],
-                            e.words()
+                            e.words(),
+                            e.detectable * 100.0
                         )
                     })
                     .collect();

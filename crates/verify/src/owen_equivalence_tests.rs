@@ -127,6 +127,20 @@ fn the_fourth_diagonal_moment_tells_affine_nodes_from_owen_where_variances_canno
         "{}",
         uniform.detail
     );
+    // Each statistic states the change it detects: the fourth moment's, at 2,000 seeds, a few
+    // percent.
+    let fourth = uniform
+        .detail
+        .split("diagonal moment 4: ratio")
+        .nth(1)
+        .unwrap();
+    let detects: f64 = fourth
+        .split("(detects ±")
+        .nth(1)
+        .and_then(|t| t.split('%').next())
+        .and_then(|t| t.parse().ok())
+        .unwrap_or_else(|| panic!("{}", uniform.detail));
+    assert!((0.5..10.0).contains(&detects), "{detects}");
     // Base 2: no diagonal moment is read (every permutation of two digits gives them).
     let b2 = PowerOfTwoBase::B2;
     let r = variance_ratios(
