@@ -1,7 +1,7 @@
 (** Every main theorem must be closed under the global context (no axioms, no admits), except
     the floating-point theorems of [Float.v], whose real numbers rest on the standard axioms of
     Coq's classical reals (listed in README.md; check.sh allows exactly those). *)
-From Gartowen Require Import Nested Boxes Checker NetMonotone Factor Counterexample Art ArtWord Binary Laws Symmetric NodeLaws ArtMarginal Affine Rank RankBasis NetRank GLTransitive.
+From Gartowen Require Import Nested Boxes Checker NetMonotone Factor Counterexample Art ArtWord Binary Laws Symmetric NodeLaws ArtMarginal Affine Rank RankBasis NetRank GLTransitive ScanMap Witness.
 
 Print Assumptions factorization_unique.
 Print Assumptions factorization_bijective.
@@ -74,3 +74,9 @@ Print Assumptions agl_two_transitive.
 Print Assumptions in_box_iff_key.
 Print Assumptions count_is_fibre.
 Print Assumptions rank_path_is_net.
+Print Assumptions scan_map_empty.
+Print Assumptions check_net_fast_correct.
+Print Assumptions word_digits_value.
+Print Assumptions recheck_fail_sound.
+Print Assumptions t_value_witness.
+Print Assumptions revalidate_sound.

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Builds the differential driver from the Coq extraction: compiles the theories the extraction
-# needs, runs Extract.v in OUT (it writes gartowen_extracted.ml there) and compiles
-# extracted/driver.ml against it with ocamlopt into OUT/driver.
+# Builds the differential driver and the witness re-checker from the Coq extraction: compiles
+# the theories the extraction needs, runs Extract.v in OUT (it writes gartowen_extracted.ml
+# there) and compiles extracted/driver.ml and extracted/revalidate.ml against it with ocamlopt
+# into OUT/driver and OUT/revalidate.
 # Usage: proofs/extract.sh OUT    (tests/extracted_differential.rs calls it with target/extracted)
 set -euo pipefail
 proofs="$(cd "$(dirname "$0")" && pwd)"
@@ -10,10 +11,12 @@ mkdir -p "$out"
 for tool in coqc ocamlopt; do
   command -v "$tool" >/dev/null || { echo "extract: $tool is missing (Debian's coq brings both)" >&2; exit 1; }
 done
-for t in Nested Boxes Checker Art ArtWord Laws Symmetric NodeLaws ArtMarginal Rank RankBasis; do
+for t in Nested Boxes Checker NetMonotone ScanMap Witness Art ArtWord Laws Symmetric NodeLaws ArtMarginal Rank RankBasis; do
   coqc -Q "$proofs" Gartowen "$proofs/$t.v"
 done
 cd "$out"
 coqc -Q "$proofs" Gartowen "$proofs/Extract.v"
 cp "$proofs/extracted/driver.ml" .
+cp "$proofs/extracted/revalidate.ml" .
 ocamlopt -w -a gartowen_extracted.mli gartowen_extracted.ml driver.ml -o driver
+ocamlopt -w -a gartowen_extracted.mli gartowen_extracted.ml revalidate.ml -o revalidate

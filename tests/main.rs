@@ -24,4 +24,5 @@ mod shared_requests;
 mod slurm_scripts;
 mod theorems;
 mod verify;
+mod witness;
 mod word_sweep;

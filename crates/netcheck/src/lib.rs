@@ -21,6 +21,7 @@ pub mod rank;
 mod shape_tree;
 pub mod shapes;
 pub mod snap;
+pub mod witness;
 
 /// Progress of a check, in units of shapes checked; called from many threads.
 pub type Progress<'a> = &'a dyn gartowen_core::Progress;

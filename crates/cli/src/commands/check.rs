@@ -7,6 +7,7 @@ use gartowen::certificate::{CertVerdict, Certificate};
 use gartowen::net_check::{
     check_points_owned, snap_floats, snap_note, NetOutcome, NetQuery, Progress,
 };
+use gartowen::netcheck::witness::net_witness;
 use gartowen::netcheck::CheckBase;
 use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::json;
@@ -28,6 +29,7 @@ use std::process::ExitCode;
 ///   gartowen check sz16.npy --base 16 --t 0
 ///   gartowen check sobol.npy --base 2 --projections pairs --json
 ///   gartowen check sz4.hex --base 4 --sequence --t 0
+///   gartowen check sz16.npy --base 16 --witness sz16.witness && proofs/revalidate.sh sz16.witness
 #[derive(Args, Debug)]
 #[command(verbatim_doc_comment)]
 pub struct CheckArgs {
@@ -63,6 +65,11 @@ pub struct CheckArgs {
     /// Worker threads (results are identical for any count; default: all cores).
     #[arg(long)]
     pub threads: Option<usize>,
+    /// Also write what the verdict rests on (the words read, the failing box, or the t-value's
+    /// box at t − 1) for `proofs/revalidate.sh FILE`, which re-checks it with the checker
+    /// extracted from the Coq proofs. Whole sets only (not with --sequence or --projections).
+    #[arg(long, value_name = "FILE")]
+    pub witness: Option<PathBuf>,
     /// Read floats in a base that is not a power of two as they are (floor), without snapping
     /// them to the base's grid. A float cannot hold 1/3: unsnapped, a base-3 net reads wrong.
     #[arg(long)]
@@ -110,9 +117,19 @@ impl Progress for BarProgress {
 
 /// Runs `check`.
 pub fn run(a: CheckArgs) -> Result<ExitCode, CliError> {
-    if let Some(junit) = &a.junit {
+    {
         use crate::paths::{named, refuse_clobbering};
-        refuse_clobbering(&[named("FILE", &a.file)], &[named("--junit", junit)])?;
+        let outputs: Vec<_> = [("--junit", &a.junit), ("--witness", &a.witness)]
+            .into_iter()
+            .filter_map(|(flag, p)| p.as_ref().map(|p| named(flag, p)))
+            .collect();
+        refuse_clobbering(&[named("FILE", &a.file)], &outputs)?;
+    }
+    if a.witness.is_some() && (a.sequence || a.projections.is_some()) {
+        return Err(usage(
+            "--witness covers the whole set's net property or t-value: leave out --sequence \
+             and --projections",
+        ));
     }
     if let Some(n) = a.threads {
         if n > MAX_THREADS {
@@ -151,6 +168,13 @@ pub fn run(a: CheckArgs) -> Result<ExitCode, CliError> {
     } else {
         (read, None)
     };
+    if let Some(path) = &a.witness {
+        let w = net_witness(&points, base, a.m, a.t)
+            .map_err(|e| CliError::Usage(format!("--witness: {e}")))?;
+        crate::output::write_atomically(Some(path), |out| {
+            w.write(out).map_err(crate::output::io_err)
+        })?;
+    }
     let outcome = check_points_owned(points, base, &query, &BarProgress::default())
         .map_err(CliError::Usage)?;
     let holds = outcome.holds;
