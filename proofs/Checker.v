@@ -8,7 +8,8 @@
       when they share the box ([key_eq_iff]);
     - shapes: the compositions of [K] into [s] parts in lexicographic order ([comps], exactly
       the shapes of [K] digits, [In_comps]);
-    - per shape, a running histogram that searches only for overflow ([Boxes.scan]): the
+    - per shape, a running histogram that searches only for overflow ([Boxes.scan], kept in a
+      binary trie by [ScanMap.scan_map] so that the extracted model runs on 2^16 points): the
       pigeonhole step ([Boxes.pigeonhole]) shows that no box holding more than [b^t] points means every box holds
       exactly [b^t];
     - the quick probe of the t search, which scans a prefix of the points first ([level_any]);
@@ -16,9 +17,9 @@
     The definitions are extracted ([Extract.v]) and run against the Rust checker on every case
     of [tests/extracted_checker.rs]. *)
 
-From Coq Require Import List Arith Bool Lia.
+From Coq Require Import List Arith Bool Lia FMapPositive.
 Import ListNotations.
-From Gartowen Require Import Nested Boxes.
+From Gartowen Require Import Nested Boxes ScanMap.
 
 Section Checker.
 
@@ -145,7 +146,7 @@ Qed.
 
 (** One shape: the overflow-only scan of the points' keys against [b^t]. *)
 Definition check_shape (K t : nat) (Ps : list (list (list nat))) (sh : list nat) :=
-  scan _ (key K sh) (b ^ t) (fun _ => 0) Ps.
+  scan_map _ (key K sh) (b ^ t) (PositiveMap.empty nat) Ps.
 
 (** Every shape of [m − t] digits, in order, over prefixes at depth [K]; the first failing
     shape and the point whose box overflowed, or [None] when the level holds. *)
@@ -227,7 +228,7 @@ Proof.
     assert (C : In sh (comps (m - t) s)) by (apply In_comps; unfold sh, shape; rewrite map_length; auto).
     assert (F : Forall (fun d => d <= K) sh) by (apply (comps_le (m - t) s); auto).
     assert (LS : length sh = s) by (unfold sh, shape; rewrite map_length; auto).
-    specialize (H sh C). rewrite scan_none in H.
+    specialize (H sh C). rewrite scan_map_empty, scan_none in H.
     assert (Le : Forall (fun c => c <= b ^ t) (map (fun B' => count B' Ps) (boxes sh))).
     { rewrite Forall_forall. intros c I. apply in_map_iff in I as [B' [<- I]].
       apply in_boxes in I as [VB' SB'].
@@ -245,7 +246,7 @@ Proof.
       * fold sh in SB. rewrite SB, <- Nat.pow_add_r. f_equal. lia.
       * rewrite Forall_forall. intros P I. pose proof (proj1 (Forall_forall _ _) WPs P I) as WP.
         apply (deep_fits K); eauto using wf_deep. destruct WP; lia.
-  - intros [_ [_ H]] sh C. apply scan_none. intros P I. simpl.
+  - intros [_ [_ H]] sh C. rewrite scan_map_empty. apply scan_none. intros P I. simpl.
     pose proof (proj1 (Forall_forall _ _) WPs P I) as WP.
     assert (F : Forall (fun d => d <= K) sh) by (apply (comps_le (m - t) s); auto).
     apply In_comps in C as [LS SS].
@@ -274,9 +275,9 @@ Proof.
   intros m t s Ps. unfold level_any. destruct (64 <=? length Ps / 64); [|tauto].
   destruct (check_level m m t s (firstn (length Ps / 64) Ps)) as [[sh P]|] eqn:E; [|tauto].
   split; [discriminate|]. intro N. exfalso.
-  apply find_first_some in E as [I S]. unfold check_shape in S.
+  apply find_first_some in E as [I S]. unfold check_shape in S. rewrite scan_map_empty in S.
   apply scan_firstn in S as [y Y]. unfold check_level in N. rewrite find_first_none in N.
-  specialize (N sh I). unfold check_shape in N. congruence.
+  specialize (N sh I). unfold check_shape in N. rewrite scan_map_empty in N. congruence.
 Qed.
 
 Lemma in_box_empty : forall B P, Forall (fun p => p = []) B -> length B = length P -> in_box B P = true.

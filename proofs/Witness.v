@@ -158,7 +158,7 @@ Proof.
   apply find_first_none_ext. intros sh I. apply In_comps in I as [L _].
   unfold check_shape_fast, check_shape. rewrite scan_map_map.
   rewrite (scan_map_ext _ _ (fun P => keyh (m - t) sh P 0)) by (intros; apply keyv_vals).
-  rewrite scan_map_empty. f_equal. apply scan_ext.
+  rewrite !scan_map_empty. f_equal. apply scan_ext.
   intros P IP. rewrite Forall_forall in W. destruct (W P IP) as [LP _].
   rewrite keyh_key by lia. lia.
 Qed.

@@ -26,10 +26,10 @@ use std::fmt::Write as _;
 
 /// A point set as base-b digits: `points[i][j]` is coordinate j of point i, n digits, most
 /// significant first.
-struct DigitSet {
-    b: u64,
-    n: u32,
-    points: Vec<Vec<Vec<u64>>>,
+pub(crate) struct DigitSet {
+    pub(crate) b: u64,
+    pub(crate) n: u32,
+    pub(crate) points: Vec<Vec<Vec<u64>>>,
 }
 
 /// The queries asked of one set: its m when N = b^m, and the largest M with b^M ≤ N.
@@ -39,7 +39,7 @@ struct Queries {
 }
 
 impl DigitSet {
-    fn dims(&self) -> usize {
+    pub(crate) fn dims(&self) -> usize {
         self.points[0].len()
     }
 
@@ -117,7 +117,7 @@ impl DigitSet {
 }
 
 /// The Rust reports of one set, in the order of the driver's answers.
-struct RustReports {
+pub(crate) struct RustReports {
     nets: Vec<(u32, u32, NetReport)>,
     t_value: Option<(u32, u32)>,
     sequences: Vec<(u32, u32, SequenceReport)>,
@@ -125,13 +125,13 @@ struct RustReports {
 
 /// Which Rust net path answers the net queries (each must agree with the model).
 #[derive(Clone, Copy, Debug)]
-enum NetPath {
+pub(crate) enum NetPath {
     TreeWalk,
     PerShape,
     Owned,
 }
 
-fn reports(set: &DigitSet, path: NetPath) -> RustReports {
+pub(crate) fn reports(set: &DigitSet, path: NetPath) -> RustReports {
     let points = set.words();
     let base = CheckBase::new(set.b).unwrap();
     let q = set.queries();
@@ -183,7 +183,7 @@ fn failure_text(f: &BoxFailure) -> String {
 }
 
 /// The Rust reports written as the driver writes the model's answers.
-fn answers(r: &RustReports) -> Vec<String> {
+pub(crate) fn answers(r: &RustReports) -> Vec<String> {
     let mut out = Vec::new();
     for (m, t, n) in &r.nets {
         out.push(match &n.first_failure {
@@ -265,7 +265,7 @@ fn mutate(r: &RustReports, mutant: Mutant, dims: usize) -> RustReports {
 }
 
 /// Base-b digits of v, most significant first, exactly n of them.
-fn digits_of(mut v: u64, b: u64, n: u32) -> Vec<u64> {
+pub(crate) fn digits_of(mut v: u64, b: u64, n: u32) -> Vec<u64> {
     let mut d = vec![0; n as usize];
     for k in (0..n as usize).rev() {
         d[k] = v % b;
@@ -298,7 +298,7 @@ fn exhaustive(b: u64, s: usize, n: u32, npts: u32) -> Vec<DigitSet> {
 }
 
 /// The first b^m points of Sobol in `dims` dimensions, read as n base-2^q digits.
-fn sobol(q: u32, m: u32, dims: usize, n: u32) -> DigitSet {
+pub(crate) fn sobol(q: u32, m: u32, dims: usize, n: u32) -> DigitSet {
     let seq = SequenceKind::Sobol.build(dims, Width::W32).unwrap();
     let b = 1u64 << q;
     let points = (0..b.pow(m))
@@ -312,7 +312,7 @@ fn sobol(q: u32, m: u32, dims: usize, n: u32) -> DigitSet {
 }
 
 /// The first p^m points of Faure in a prime base p (n = max(m, 1) digits).
-fn faure(p: u64, m: u32, dims: usize) -> DigitSet {
+pub(crate) fn faure(p: u64, m: u32, dims: usize) -> DigitSet {
     let count = p.pow(m);
     let fr = faure_prime(p, count, dims).unwrap();
     let n = m.max(1);
@@ -338,7 +338,7 @@ fn hammersley(b: u64, m: u32) -> DigitSet {
 }
 
 /// The set with one digit changed: point i, coordinate j, digit k becomes (d + 1) mod b.
-fn broken(set: &DigitSet, i: usize, j: usize, k: usize) -> DigitSet {
+pub(crate) fn broken(set: &DigitSet, i: usize, j: usize, k: usize) -> DigitSet {
     let mut points = set.points.clone();
     points[i][j][k] = (points[i][j][k] + 1) % set.b;
     DigitSet {
@@ -348,7 +348,7 @@ fn broken(set: &DigitSet, i: usize, j: usize, k: usize) -> DigitSet {
     }
 }
 
-fn random(b: u64, s: usize, n: u32, npts: usize, rng: &mut SplitMix64) -> DigitSet {
+pub(crate) fn random(b: u64, s: usize, n: u32, npts: usize, rng: &mut SplitMix64) -> DigitSet {
     let points = (0..npts)
         .map(|_| {
             (0..s)
@@ -426,7 +426,7 @@ fn corpus() -> Vec<DigitSet> {
 }
 
 /// The model's answer lines, in order.
-fn model_answers(driver: &std::path::Path, sets: &[DigitSet]) -> Vec<String> {
+pub(crate) fn model_answers(driver: &std::path::Path, sets: &[DigitSet]) -> Vec<String> {
     let mut input = String::new();
     for set in sets {
         set.write(&mut input);
@@ -446,7 +446,11 @@ fn model_answers(driver: &std::path::Path, sets: &[DigitSet]) -> Vec<String> {
 }
 
 /// Answer lines where the Rust reports and the model differ (at most `show` are kept).
-fn disagreements(model: &[String], rust: &[String], show: usize) -> (usize, Vec<String>) {
+pub(crate) fn disagreements(
+    model: &[String],
+    rust: &[String],
+    show: usize,
+) -> (usize, Vec<String>) {
     assert_eq!(model.len(), rust.len(), "one answer per query");
     let diff: Vec<(&String, &String)> = model.iter().zip(rust).filter(|(a, b)| a != b).collect();
     let shown = diff

@@ -7,6 +7,7 @@ mod docs_paths;
 mod expected_discrepancy;
 mod external;
 mod extracted_checker;
+mod extracted_checker_large;
 mod extracted_differential;
 mod extracted_rank;
 mod f32_exhaustive;

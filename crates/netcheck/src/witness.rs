@@ -174,3 +174,60 @@ impl NetWitness {
         writeln!(out, "end")
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use gartowen_core::Width;
+
+    fn set(width: Width, rows: &[Vec<u64>]) -> PointSet {
+        PointSet::from_rows(width, rows).unwrap()
+    }
+
+    #[test]
+    fn wide_words_keep_their_top_32_bits_in_base_2_to_the_q_and_are_refused_otherwise() {
+        let rows = vec![vec![0x1234_5678_9abc_def0], vec![0x8765_4321_0fed_cba9]];
+        let b2 = CheckBase::new(2).unwrap();
+        let w = net_witness(&set(Width::W64, &rows), b2, None, None).unwrap();
+        assert_eq!(w.bits, 32);
+        assert_eq!(w.words, vec![0x1234_5678, 0x8765_4321]);
+        assert_eq!(w.claim, WitnessClaim::TValue { t: 0, below: None });
+        let rows3: Vec<Vec<u64>> = (0..3u64).map(|i| vec![i * (u64::MAX / 3)]).collect();
+        let e = net_witness(
+            &set(Width::W64, &rows3),
+            CheckBase::new(3).unwrap(),
+            None,
+            None,
+        );
+        assert!(e.unwrap_err().to_string().contains("32-bit words"));
+        // 16-bit words stay 16-bit words.
+        let narrow = net_witness(
+            &set(Width::new(16).unwrap(), &[vec![0x8000], vec![0]]),
+            b2,
+            None,
+            Some(0),
+        )
+        .unwrap();
+        assert_eq!((narrow.bits, narrow.words.clone()), (16, vec![0x8000, 0]));
+        assert_eq!(narrow.claim, WitnessClaim::Holds { t: 0 });
+    }
+
+    #[test]
+    fn the_text_names_the_claim_and_the_box_and_refuses_sets_past_2_to_the_29() {
+        let b2 = CheckBase::new(2).unwrap();
+        // Two points in the same half: not a (0,1,1)-net, t-value 1.
+        let p = set(Width::W32, &[vec![0x1000_0000], vec![0x2000_0000]]);
+        let w = net_witness(&p, b2, None, None).unwrap();
+        let mut out = Vec::new();
+        w.write(&mut out).unwrap();
+        assert_eq!(
+            String::from_utf8(out).unwrap(),
+            "gartowen-witness 1\nbase 2 width 32 dims 1 m 1 points 2\nclaim tvalue 1\n\
+             box 1 0 count 2\nwords\n10000000\n20000000\nend\n"
+        );
+        let w = net_witness(&p, b2, None, Some(0)).unwrap();
+        assert!(matches!(w.claim, WitnessClaim::Fails { t: 0, ref failure } if failure.count == 2));
+        let e = net_witness(&p, CheckBase::new(1 << 30).unwrap(), Some(1), Some(0));
+        assert!(e.unwrap_err().to_string().contains("2^29"));
+    }
+}
