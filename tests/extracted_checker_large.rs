@@ -75,3 +75,39 @@ fn the_net_checker_agrees_with_its_coq_model_on_sets_of_4096_points_and_more() {
     };
     assert!(fails_at(257), "no failing box of 257 points or more");
 }
+
+/// The planted bugs of `scripts/planted-bugs.sh` still apply to the checker's source, so the
+/// large tier keeps showing what this corpus catches.
+#[test]
+fn the_planted_bugs_apply_to_the_checker_source() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let dir = root.join("tests/planted");
+    let mut patches: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "patch"))
+        .collect();
+    patches.sort();
+    assert!(patches.len() >= 2, "{patches:?}");
+    for p in patches {
+        let text = std::fs::read_to_string(&p).unwrap();
+        // Each patch changes one line of one file, and that line is in the source today.
+        let removed: Vec<&str> = text
+            .lines()
+            .filter(|l| l.starts_with('-') && !l.starts_with("---"))
+            .map(|l| &l[1..])
+            .collect();
+        let file = text
+            .lines()
+            .find_map(|l| l.strip_prefix("--- a/"))
+            .unwrap_or_else(|| panic!("{}: no file", p.display()));
+        assert_eq!(removed.len(), 1, "{}", p.display());
+        let source = std::fs::read_to_string(root.join(file)).unwrap();
+        assert!(
+            source.lines().any(|l| l == removed[0]),
+            "{}: the line it changes is no longer in {file}:\n{}",
+            p.display(),
+            removed[0]
+        );
+    }
+}
