@@ -187,3 +187,50 @@ fn set_lane_bits_portable(
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    //! Each kernel as dispatched (AVX2 + BMI2 where the CPU has them) against its portable
+    //! loop called directly, bit for bit, on lengths that end mid-chunk.
+    use super::*;
+    use gartowen_core::SplitMix64;
+
+    fn columns(rng: &mut SplitMix64, n: usize) -> (Vec<u8>, Vec<u32>) {
+        let narrow = (0..n).map(|_| rng.next_u64() as u8).collect();
+        let wide = (0..n).map(|_| (rng.next_u64() as u32) >> 12).collect();
+        (narrow, wide)
+    }
+
+    #[test]
+    fn every_kernel_as_dispatched_matches_its_portable_loop() {
+        let mut rng = SplitMix64::new(0x6b65726e);
+        for n in [1, CHUNK - 1, CHUNK, 3 * CHUNK + 17, 4096 + 5] {
+            let (narrow, wide) = columns(&mut rng, n);
+            let parent: Vec<u32> = (0..n).map(|_| (rng.next_u64() as u32) & 0x3ff).collect();
+            let cols = [
+                DigitColumn::Narrow(&narrow, 6),
+                DigitColumn::Wide(&wide, 18),
+            ];
+            for column in &cols {
+                for parent in [None, Some(parent.as_slice())] {
+                    let (mut a, mut b) = (vec![0u32; n], vec![0u32; n]);
+                    extend_all_pow2(parent, column, 2, &mut a);
+                    extend_all_pow2_portable(parent, column, 2, &mut b);
+                    assert_eq!(a, b, "extend_all_pow2, n = {n}");
+                    let (mut a, mut b) = (vec![0u32; 1 << 7], vec![0u32; 1 << 7]);
+                    set_key_bits(n, &mut a, parent, column, 2);
+                    set_key_bits_portable(n, &mut b, parent, column, 2);
+                    assert_eq!(a, b, "set_key_bits, n = {n}");
+                    assert!(a.iter().any(|&w| w != 0));
+                }
+            }
+            for parent in [None, Some(parent.as_slice())] {
+                let (mut a, mut b) = (vec![0u64; 1 << 10], vec![0u64; 1 << 10]);
+                set_lane_bits(n, &mut a, parent, &cols, 4);
+                set_lane_bits_portable(n, &mut b, parent, &cols, 4);
+                assert_eq!(a, b, "set_lane_bits, n = {n}");
+                assert!(a.iter().any(|&w| w != 0));
+            }
+        }
+    }
+}
