@@ -1,7 +1,7 @@
 (** Every main theorem must be closed under the global context (no axioms, no admits), except
     the floating-point theorems of [Float.v], whose real numbers rest on the standard axioms of
     Coq's classical reals (listed in README.md; check.sh allows exactly those). *)
-From Gartowen Require Import Nested Boxes Checker NetMonotone Factor Counterexample Art ArtWord Binary Laws Symmetric NodeLaws ArtMarginal Affine Rank RankBasis NetRank GLTransitive ScanMap Witness.
+From Gartowen Require Import Nested Boxes Checker NetMonotone Factor Counterexample Art ArtWord Binary Laws Symmetric NodeLaws ArtMarginal Affine Rank RankBasis NetRank GLTransitive ScanMap Witness ArtPair.
 
 Print Assumptions factorization_unique.
 Print Assumptions factorization_bijective.
@@ -80,3 +80,5 @@ Print Assumptions word_digits_value.
 Print Assumptions recheck_fail_sound.
 Print Assumptions t_value_witness.
 Print Assumptions revalidate_sound.
+Print Assumptions art_shared_child.
+Print Assumptions art_pair_agrees_below.

@@ -5,7 +5,7 @@
 # skip (then it says so loudly). Run from anywhere.
 set -euo pipefail
 cd "$(dirname "$0")"
-theories=(Nested Boxes ScanMap Checker Factor Counterexample Art ArtWord Binary Laws Symmetric NetMonotone Witness NodeLaws ArtMarginal Affine Rank RankBasis NetRank GLTransitive Float DdSum Discrepancy WrapAround)
+theories=(Nested Boxes ScanMap Checker Factor Counterexample Art ArtWord Binary Laws Symmetric NetMonotone Witness ArtPair NodeLaws ArtMarginal Affine Rank RankBasis NetRank GLTransitive Float DdSum Discrepancy WrapAround)
 # The only axioms a floating-point theorem may rest on: Coq's classical reals, which Flocq uses.
 allowed_axioms=(ClassicalDedekindReals.sig_forall_dec ClassicalDedekindReals.sig_not_dec
   FunctionalExtensionality.functional_extensionality_dep Classical_Prop.classic)

@@ -226,3 +226,43 @@ fn false_alarm_rate_on_true_owen_scrambles_agrees_with_the_level() {
         );
     }
 }
+
+/// Inputs differing only at one digit: art-owen-m8's grammar gives the children of digits c
+/// and c ⊕ 0xc0 one symbol about a quarter of the time (`gartowen_art::pair_law`), so their
+/// subtrees are one map (`proofs/ArtPair.v`) and the outputs agree below; claiming Owen, it
+/// fails `pair-lemma` on that sub-test. art-owen-m7 (no sibling shares a symbol) and the
+/// base-256 Owen oracle see no such agreement.
+#[test]
+fn sibling_subtrees_that_are_one_map_fail_the_pair_lemma() {
+    let registry = gartowen::registry();
+    let names: Vec<String> = ["art-owen-m8", "art-owen-m7", "owen-oracle:base=256"]
+        .map(String::from)
+        .to_vec();
+    let reports = verify_shard(
+        &registry,
+        &names,
+        Level::Quick,
+        Shard::ALL,
+        Some(Claim::OWEN),
+        &|_| {},
+    )
+    .unwrap();
+    let lemma = |r: &ImplReport| {
+        r.checks
+            .iter()
+            .find(|c| c.check == "pair-lemma")
+            .unwrap()
+            .clone()
+    };
+    let m8 = lemma(&reports[0]);
+    assert_eq!(m8.verdict, Verdict::Fail, "{}", m8.detail);
+    assert!(
+        m8.detail.contains("differing only at digit"),
+        "{}",
+        m8.detail
+    );
+    for r in &reports[1..] {
+        let c = lemma(r);
+        assert_eq!(c.verdict, Verdict::Pass, "{}: {}", r.name, c.detail);
+    }
+}

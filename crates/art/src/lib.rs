@@ -12,6 +12,7 @@ pub mod grammar;
 pub mod keyed;
 #[cfg(feature = "mutants")]
 pub mod mutants;
+pub mod pair_law;
 pub mod peers;
 pub mod record;
 pub mod registry;

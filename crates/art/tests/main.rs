@@ -5,5 +5,6 @@ mod batch;
 mod composed;
 mod grammar;
 mod nets;
+mod pair_law;
 mod record;
 mod scramblers;

@@ -10,15 +10,56 @@
 //!   shifts), folded to ≤ 16 × 16 cells: a marginal claim;
 //! * digit r + 1: (y_{r+1}, y'_{r+1}) against uniform × uniform: an independence claim. A digital
 //!   shift fails it at every r (y ⊕ y' is the inputs' difference).
+//!
+//! And inputs that differ **only** at digit r (u, and u with digit r changed to each other
+//! value, at most 255 of them): under Owen the nodes below r are independent, so the outputs
+//! agree on all full digits below r with probability b^-(digits below r) per instance. A
+//! scrambler whose sibling subtrees can be one map (an ART grammar that gives two children of
+//! a node one symbol: `proofs/ArtPair.v`, `gartowen_art::pair_law`) agrees far more often:
+//! art-owen-m8's table, for digits differing by 0xc0, in about a quarter of instances.
 
 use crate::expected::{pair_image_law, uniform};
 use crate::family::{LawConfig, LawFamily};
 use crate::sampling::{fold, folded_size, Probe};
-use crate::stats::chi_square;
+use crate::stats::{chi_square, poisson_sf};
 use crate::subtest::{Requirement, SubTest};
 use gartowen_core::SplitMix64;
 
 const LEMMA_SEED: u64 = 0x6c65_6d6d; // "lemm"
+const SIBLING_SEED: u64 = 0x7369_626c; // "sibl"
+
+/// Instances of the equal-suffix probes: each is b words per depth.
+pub const SIBLING_SEEDS: u64 = 200;
+
+/// The most changed values of digit r per depth (all of them up to base 256).
+const SIBLING_VALUES: u32 = 255;
+
+/// For each r with at least two full digits below it: a random word and the words that differ
+/// from it only at digit r (every other value up to base 256, else 255 of them in order from
+/// a random offset).
+fn sibling_sets(cfg: &LawConfig) -> Vec<(u32, Vec<u64>)> {
+    let tree = &cfg.tree;
+    let b = tree.b();
+    let mut rng = SplitMix64::new(SIBLING_SEED);
+    cfg.depths()
+        .filter(|&r| r + 2 < tree.full_digits())
+        .map(|r| {
+            let u = tree.random_word(&mut rng);
+            let ur = tree.digit(u, r);
+            let start = if b - 1 > SIBLING_VALUES {
+                rng.bounded(b - 1)
+            } else {
+                0
+            };
+            let mut words = vec![u];
+            words.extend(
+                (0..(b - 1).min(SIBLING_VALUES))
+                    .map(|i| tree.set(u, r, (ur + 1 + (start + i) % (b - 1)) % b)),
+            );
+            (r, words)
+        })
+        .collect()
+}
 
 /// The input pair for each r: random words, the second's digit r changed and its later digits
 /// redrawn.
@@ -40,14 +81,104 @@ fn pairs(cfg: &LawConfig) -> Vec<(u32, u64, u64)> {
         .collect()
 }
 
-/// One probe per r: the two words.
+/// One probe per r: the two words; then one per r for the equal-suffix words.
 fn probes(cfg: &LawConfig) -> Vec<Probe> {
-    pairs(cfg)
+    let mut probes: Vec<Probe> = pairs(cfg)
         .into_iter()
         .map(|(_, u, v)| Probe {
             dim: 0,
             words: vec![u, v],
             seeds: cfg.plan.law_seeds,
+        })
+        .collect();
+    probes.extend(sibling_sets(cfg).into_iter().map(|(_, words)| Probe {
+        dim: 0,
+        words,
+        seeds: cfg.plan.law_seeds.min(SIBLING_SEEDS),
+    }));
+    probes
+}
+
+/// Whether y and y' agree on the full digits below r.
+fn agree_below(tree: &crate::sampling::Tree, y: u64, y2: u64, r: u32) -> bool {
+    (r + 1..tree.full_digits()).all(|k| tree.digit(y, k) == tree.digit(y2, k))
+}
+
+/// The coincidence rate ρ per instance that one tested word reaches with power 0.9 at
+/// per-test level 1e-5: the least count a whose Bonferroni-adjusted Poisson tail is below the
+/// level, then the least ρ with P(Poisson(n·ρ) ≥ a) ≥ 0.9 (by bisection; 1 when none).
+fn detectable_rate(n: u64, lambda: f64, others: f64) -> f64 {
+    let Some(a) = (1..=n).find(|&a| poisson_sf(a, lambda) * others <= 1e-5) else {
+        return 1.0;
+    };
+    let (mut lo, mut hi) = (0.0f64, 1.0f64);
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if poisson_sf(a, lambda + n as f64 * mid) >= 0.9 {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    hi
+}
+
+/// One sub-test per r: the most instances in which a changed word's outputs agree with the
+/// first word's below r, against Poisson(n·b^-(digits below r)), Bonferroni over the words.
+fn sibling_tests(cfg: &LawConfig, outputs: &[&[Vec<u64>]], first: usize) -> Vec<SubTest> {
+    let tree = &cfg.tree;
+    let b = f64::from(tree.b());
+    sibling_sets(cfg)
+        .into_iter()
+        .enumerate()
+        .map(|(j, (r, words))| {
+            let runs: Vec<&Vec<u64>> = outputs
+                .iter()
+                .map(|seed_out| &seed_out[first + j])
+                .filter(|ys| !ys.is_empty())
+                .collect();
+            let n = runs.len() as u64;
+            let agreements: Vec<u64> = (1..words.len())
+                .map(|w| {
+                    runs.iter()
+                        .filter(|ys| agree_below(tree, ys[0], ys[w], r))
+                        .count() as u64
+                })
+                .collect();
+            let (worst, most) = agreements
+                .iter()
+                .enumerate()
+                .max_by_key(|&(_, &a)| a)
+                .map(|(w, &a)| (w + 1, a))
+                .unwrap_or((0, 0));
+            let below = tree.full_digits() - 1 - r;
+            let lambda = n as f64 * b.powi(-(below as i32));
+            let others = (words.len() - 1) as f64;
+            let p_value = (poisson_sf(most, lambda) * others).min(1.0);
+            let digit = |w: u64| tree.digit(w, r);
+            SubTest {
+                name: format!(
+                    "r = {r}: inputs differing only at digit {r} ({} values): outputs agreeing on \
+                     all {below} later digits in at most {most} of {n} instances (digit {} vs {}; \
+                     expected under Owen: {lambda:.1e})",
+                    words.len(),
+                    digit(words[0]),
+                    digit(words[worst.max(1).min(words.len() - 1)])
+                ),
+                depth: Some(r + 1),
+                requires: Requirement::Independent,
+                statistic: most as f64,
+                p_value,
+                n,
+                dof: None,
+                power: format!(
+                    "detects two inputs differing at one digit whose later outputs coincide in \
+                     {:.1} % of instances (power 0.9 at per-test level 1e-5)",
+                    100.0 * detectable_rate(n, lambda, others)
+                ),
+                deviates: false,
+                not_run: None,
+            }
         })
         .collect()
 }
@@ -91,6 +222,7 @@ fn analyse(cfg: &LawConfig, outputs: &[&[Vec<u64>]]) -> Vec<SubTest> {
             chi_square(&after, &uniform(f * f)),
         ));
     }
+    tests.extend(sibling_tests(cfg, outputs, pairs(cfg).len()));
     tests
 }
 
@@ -107,7 +239,7 @@ impl LawFamily for PairLemma {
     }
 
     fn what(&self) -> &'static str {
-        "inputs first differing at digit r: digits r distinct and uniform; digits r+1 independent and uniform"
+        "inputs first differing at digit r: digits r distinct and uniform; digits r+1 independent and uniform; inputs differing only at r: later digits agree as rarely as b^-(digits below)"
     }
 
     fn shared_probes(&self, cfg: &LawConfig) -> Vec<Probe> {
