@@ -20,4 +20,6 @@ if [ "$stale" = 1 ]; then
   echo "revalidate: building the extracted checker (proofs/extract.sh, about a minute)" >&2
   "$root/proofs/extract.sh" "$root/target/extracted" >/dev/null
 fi
+# The extracted list functions recurse once per point: give them the stack they need.
+ulimit -s unlimited 2>/dev/null || ulimit -s "$(ulimit -H -s)" 2>/dev/null || true
 exec "$bin" "$1"

@@ -78,7 +78,13 @@ let () =
              Printf.sprintf "; at t = %d box %s of shape %s holds %d points" (t - 1) (ints av)
                (ints sh) c)
   in
-  if revalidate b w m s words claim then (
+  let verdict =
+    try revalidate b w m s words claim
+    with Stack_overflow ->
+      bad "the re-check ran out of stack (its list functions recurse once per point): raise the \
+           limit (ulimit -s unlimited), as proofs/revalidate.sh does"
+  in
+  if verdict then (
     Printf.printf "re-checked by the extracted checker (Witness.revalidate_sound): %s\n" what;
     exit 0)
   else (
