@@ -14,6 +14,22 @@ fn verdict(r: &ImplReport, check: &str) -> Verdict {
     r.checks.iter().find(|c| c.check == check).unwrap().verdict
 }
 
+/// The quick battery on `names`, each judged as an Owen scramble.
+fn quick_reports_claiming_owen(
+    registry: &gartowen::core::registry::Registry,
+    names: &[String],
+) -> Vec<ImplReport> {
+    verify_shard(
+        registry,
+        names,
+        Level::Quick,
+        Shard::ALL,
+        Some(Claim::OWEN),
+        &|_| {},
+    )
+    .unwrap()
+}
+
 #[test]
 fn imitations_claiming_owen_fail_named_checks_and_true_owen_passes() {
     let registry = gartowen::registry();
@@ -27,15 +43,7 @@ fn imitations_claiming_owen_fail_named_checks_and_true_owen_passes() {
     ]
     .map(String::from)
     .to_vec();
-    let reports = verify_shard(
-        &registry,
-        &names,
-        Level::Quick,
-        Shard::ALL,
-        Some(Claim::OWEN),
-        &|_| {},
-    )
-    .unwrap();
+    let reports = quick_reports_claiming_owen(&registry, &names);
     // LMS + shift is pairwise independent (its pair laws pass) but affine: flip-rank and the
     // subtree collisions catch it.
     let expected_failures: [&[&str]; 6] = [
@@ -238,15 +246,7 @@ fn sibling_subtrees_that_are_one_map_fail_the_pair_lemma() {
     let names: Vec<String> = ["art-owen-m8", "art-owen-m7", "owen-oracle:base=256"]
         .map(String::from)
         .to_vec();
-    let reports = verify_shard(
-        &registry,
-        &names,
-        Level::Quick,
-        Shard::ALL,
-        Some(Claim::OWEN),
-        &|_| {},
-    )
-    .unwrap();
+    let reports = quick_reports_claiming_owen(&registry, &names);
     let lemma = |r: &ImplReport| {
         r.checks
             .iter()

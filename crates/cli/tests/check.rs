@@ -13,6 +13,24 @@ fn generate(dir: &Path, name: &str, args: &[&str]) -> String {
     path
 }
 
+/// The hex file at `good` with point 8's coordinate 3 copied onto point 7, as `bad.hex` in
+/// `dir`: two points then share a box of every shape with d_3 ≥ 1.
+fn point_7_copying_point_8(dir: &Path, good: &str) -> std::path::PathBuf {
+    let text = std::fs::read_to_string(good).unwrap();
+    let mut rows: Vec<Vec<String>> = text
+        .lines()
+        .map(|l| l.split(' ').map(String::from).collect())
+        .collect();
+    rows[7][3] = rows[8][3].clone();
+    let bad = dir.join("bad.hex");
+    std::fs::write(
+        &bad,
+        rows.iter().map(|r| r.join(" ") + "\n").collect::<String>(),
+    )
+    .unwrap();
+    bad
+}
+
 #[test]
 fn sz16_is_a_0_3_16_net_and_a_mutation_fails_with_exit_1() {
     let dir = tempfile::tempdir().unwrap();
@@ -32,18 +50,7 @@ fn sz16_is_a_0_3_16_net_and_a_mutation_fails_with_exit_1() {
     assert_eq!(v["inputs"][0]["details"]["points"], 4096);
 
     // Copy point 8's coordinate 3 onto point 7: two points share a box of shape d_3 ≥ 1.
-    let text = std::fs::read_to_string(&good).unwrap();
-    let mut rows: Vec<Vec<String>> = text
-        .lines()
-        .map(|l| l.split(' ').map(String::from).collect())
-        .collect();
-    rows[7][3] = rows[8][3].clone();
-    let bad = dir.path().join("bad.hex");
-    std::fs::write(
-        &bad,
-        rows.iter().map(|r| r.join(" ") + "\n").collect::<String>(),
-    )
-    .unwrap();
+    let bad = point_7_copying_point_8(dir.path(), &good);
     let o = gartowen(&[
         "check",
         bad.to_str().unwrap(),
@@ -531,17 +538,7 @@ fn witness_files_hold_the_words_and_the_failing_box_and_refuse_what_they_cannot_
     assert_eq!(*lines.last().unwrap(), "end");
 
     // A broken set: the witness names the box the report names, with its count.
-    let mut rows: Vec<Vec<String>> = input
-        .lines()
-        .map(|l| l.split(' ').map(String::from).collect())
-        .collect();
-    rows[7][3] = rows[8][3].clone();
-    let bad = dir.path().join("bad.hex");
-    std::fs::write(
-        &bad,
-        rows.iter().map(|r| r.join(" ") + "\n").collect::<String>(),
-    )
-    .unwrap();
+    let bad = point_7_copying_point_8(dir.path(), &good);
     let bad = bad.to_str().unwrap();
     let o = gartowen(&[
         "check",
