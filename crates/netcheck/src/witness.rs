@@ -56,15 +56,16 @@ pub struct NetWitness {
 }
 
 /// The words as ≤ 32-bit words with the same first m base-b digits: as they are when the set
-/// has ≤ 32 bits; the top 32 bits in base 2^q when q·m ≤ 32 (those digits read only them).
+/// has ≤ 32 bits; the top 32 bits in base 2^q (b^m ≤ 2^29 makes q·m ≤ 29, so the m digits
+/// are read from those bits alone).
 fn words32(points: &PointSet, base: CheckBase, m: u32) -> Result<(u32, Vec<u32>), NetError> {
     let w = points.width().bits();
     let shift = if w <= 32 {
         0
     } else {
         match base.log2() {
-            Some(q) if q * m <= 32 => w - 32,
-            _ => {
+            Some(_) => w - 32,
+            None => {
                 return Err(NetError::BadShape(format!(
                     "a witness holds 32-bit words: {w}-bit words in base {} at m = {m} have \
                      digits past the top 32 bits",
