@@ -99,6 +99,7 @@ fn registered_tables_share_siblings_only_in_base_256() {
                 "{variant:?}: ρ(3, 0xc0) = {rho:?}"
             );
             assert_eq!(worst, rho.probability(), "{variant:?}");
+            assert!((rho.probability() - 0.25).abs() < 1e-7, "{rho:?}");
         }
     }
 }
@@ -126,4 +127,12 @@ fn symbol_counts_sum_to_every_case_and_bad_requests_are_refused() {
         shared_child(g, 70, 1),
         Err(PairLawError::TooDeep { depth: 70 })
     );
+    assert_eq!(
+        shared_child(g, 1, 4).unwrap_err().to_string(),
+        "δ = 4: the digits differ by δ in 1..4"
+    );
+    assert!(shared_child(g, 70, 1)
+        .unwrap_err()
+        .to_string()
+        .contains("depth 70: |Σ|·b^(k+1) exceeds 128 bits"));
 }
