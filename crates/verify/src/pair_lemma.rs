@@ -250,3 +250,138 @@ impl LawFamily for PairLemma {
         analyse(cfg, outputs)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::level::Level;
+    use crate::sampling::Tree;
+    use gartowen_core::{Claim, DigitLayout, PowerOfTwoBase, Width};
+
+    fn config(q: u32) -> LawConfig {
+        LawConfig {
+            tree: Tree::new(DigitLayout::new(
+                Width::W32,
+                PowerOfTwoBase::from_q(q).unwrap(),
+            )),
+            claim: Claim::OWEN,
+            plan: *Level::Quick.plan(),
+            max_dims: None,
+        }
+    }
+
+    #[test]
+    fn sibling_words_differ_from_the_first_at_digit_r_only_each_value_once() {
+        for q in [1, 4, 8] {
+            let cfg = config(q);
+            let tree = &cfg.tree;
+            let sets = sibling_sets(&cfg);
+            assert!(!sets.is_empty());
+            assert!(sets.iter().all(|(r, _)| r + 2 < tree.full_digits()));
+            let last = cfg.depths().filter(|&r| r + 2 < tree.full_digits()).max();
+            assert_eq!(sets.last().map(|s| s.0), last);
+            for (r, words) in sets {
+                assert_eq!(words.len() as u32, tree.b(), "q = {q}");
+                let mut values: Vec<u32> = words.iter().map(|&w| tree.digit(w, r)).collect();
+                values.sort_unstable();
+                values.dedup();
+                assert_eq!(
+                    values.len() as u32,
+                    tree.b(),
+                    "every value of digit {r} once"
+                );
+                for &w in &words[1..] {
+                    // Only digit r differs (the tail bits too are equal).
+                    let diff = w ^ words[0];
+                    let k = (0..tree.full_digits()).find(|&k| tree.digit(diff, k) != 0);
+                    assert_eq!(k, Some(r));
+                    assert!(agree_below(tree, w, words[0], r));
+                    assert!(!agree_below(tree, w, words[0], r.saturating_sub(1)) || r == 0);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn agreements_below_r_are_counted_per_word_against_owens_rate() {
+        let cfg = config(4);
+        let tree = &cfg.tree;
+        let sets = sibling_sets(&cfg);
+        let first = 3; // probes before the sibling ones
+        let (r, words) = &sets[0];
+        let n = 200;
+        // Instance i: word 5's output equals word 0's below r in the first 30 instances;
+        // word 9's in the first 2; every other word's differs at the last digit.
+        let outputs: Vec<Vec<Vec<u64>>> = (0..n)
+            .map(|i| {
+                let mut probes = vec![Vec::new(); first + sets.len()];
+                probes[first] = words
+                    .iter()
+                    .enumerate()
+                    .map(|(w, &x)| {
+                        let same = (w == 5 && i < 30) || (w == 9 && i < 2) || w == 0;
+                        let last = tree.full_digits() - 1;
+                        if same {
+                            words[0]
+                        } else {
+                            tree.set(x, last, (tree.digit(words[0], last) + 1) % 16)
+                        }
+                    })
+                    .collect();
+                probes
+            })
+            .collect();
+        let views: Vec<&[Vec<u64>]> = outputs.iter().map(|o| o.as_slice()).collect();
+        let tests = sibling_tests(&cfg, &views, first);
+        let t = &tests[0];
+        assert_eq!((t.statistic, t.n, t.depth), (30.0, n, Some(r + 1)));
+        let below = tree.full_digits() - 1 - r;
+        let lambda = n as f64 * 16f64.powi(-(below as i32));
+        assert_eq!(t.p_value, (poisson_sf(30, lambda) * 15.0).min(1.0));
+        assert!(
+            t.name.contains(&format!(
+                "digit {} vs {}",
+                tree.digit(words[0], *r),
+                tree.digit(words[5], *r)
+            )),
+            "{}",
+            t.name
+        );
+        assert!(
+            t.name.contains("in at most 30 of 200 instances"),
+            "{}",
+            t.name
+        );
+        // Instances where the probe was not evaluated do not count; no agreement gives p = 1.
+        let quiet: Vec<Vec<Vec<u64>>> = outputs
+            .iter()
+            .map(|o| {
+                let mut o = o.clone();
+                o[first] = words.iter().map(|&x| x ^ 1).collect();
+                o[first][0] = words[0];
+                o
+            })
+            .collect();
+        let views: Vec<&[Vec<u64>]> = quiet.iter().map(|o| o.as_slice()).collect();
+        let t = &sibling_tests(&cfg, &views, first)[0];
+        assert_eq!((t.statistic, t.p_value), (0.0, 1.0));
+    }
+
+    #[test]
+    fn the_detectable_rate_is_the_power_point_of_the_first_significant_count() {
+        // λ negligible: one agreement is significant, so P(Poisson(nρ) ≥ 1) = 0.9 gives
+        // ρ = ln 10 / n.
+        let rho = detectable_rate(200, 1e-12, 15.0);
+        assert!((rho - 10f64.ln() / 200.0).abs() < 1e-9, "{rho}");
+        // λ = 1 (a base with few digits below r): more agreements are needed, so ρ is larger.
+        let a = (1..).find(|&a| poisson_sf(a, 1.0) * 15.0 <= 1e-5).unwrap();
+        let rho1 = detectable_rate(200, 1.0, 15.0);
+        assert!(
+            (poisson_sf(a, 1.0 + 200.0 * rho1) - 0.9).abs() < 1e-6,
+            "{rho1}"
+        );
+        assert!(rho1 > rho);
+        // Too few instances to ever reach the level: nothing is detectable below certainty.
+        assert_eq!(detectable_rate(2, 5.0, 15.0), 1.0);
+    }
+}
