@@ -303,19 +303,48 @@ mod tests {
     }
 
     #[test]
+    fn above_base_256_the_changed_values_are_255_distinct_ones() {
+        use gartowen_core::radix::{Radix, RadixLayout};
+        for b in [300u64, 1000] {
+            let tree = Tree::radix(RadixLayout::new(Width::W64, Radix::new(b).unwrap()).unwrap());
+            let cfg = LawConfig { tree, ..config(1) };
+            let tree = &cfg.tree;
+            for (r, words) in sibling_sets(&cfg) {
+                assert_eq!(words.len(), 256, "b = {b}");
+                let u = tree.digit(words[0], r);
+                let mut values: Vec<u32> = words[1..].iter().map(|&w| tree.digit(w, r)).collect();
+                assert!(values.iter().all(|&v| v != u && v < b as u32));
+                // Consecutive values from a random start (mod b, skipping u's own).
+                assert!(values
+                    .windows(2)
+                    .all(|p| p[1] == (p[0] + 1) % b as u32 || p[1] == (p[0] + 2) % b as u32));
+                values.sort_unstable();
+                values.dedup();
+                assert_eq!(values.len(), 255);
+                for &w in &words[1..] {
+                    assert!(agree_below(tree, w, words[0], r));
+                    assert!((0..r).all(|k| tree.digit(w, k) == tree.digit(words[0], k)));
+                }
+            }
+        }
+    }
+
+    #[test]
     fn agreements_below_r_are_counted_per_word_against_owens_rate() {
         let cfg = config(4);
         let tree = &cfg.tree;
         let sets = sibling_sets(&cfg);
         let first = 3; // probes before the sibling ones
-        let (r, words) = &sets[0];
+                       // The second set (r = 1), so that r enters the number of digits below it.
+        let (r, words) = &sets[1];
+        assert_eq!(*r, 1);
         let n = 200;
         // Instance i: word 5's output equals word 0's below r in the first 30 instances;
         // word 9's in the first 2; every other word's differs at the last digit.
         let outputs: Vec<Vec<Vec<u64>>> = (0..n)
             .map(|i| {
                 let mut probes = vec![Vec::new(); first + sets.len()];
-                probes[first] = words
+                probes[first + 1] = words
                     .iter()
                     .enumerate()
                     .map(|(w, &x)| {
@@ -333,7 +362,7 @@ mod tests {
             .collect();
         let views: Vec<&[Vec<u64>]> = outputs.iter().map(|o| o.as_slice()).collect();
         let tests = sibling_tests(&cfg, &views, first);
-        let t = &tests[0];
+        let t = &tests[1];
         assert_eq!((t.statistic, t.n, t.depth), (30.0, n, Some(r + 1)));
         let below = tree.full_digits() - 1 - r;
         let lambda = n as f64 * 16f64.powi(-(below as i32));
@@ -357,14 +386,15 @@ mod tests {
             .iter()
             .map(|o| {
                 let mut o = o.clone();
-                o[first] = words.iter().map(|&x| x ^ 1).collect();
-                o[first][0] = words[0];
+                o[first + 1] = words.iter().map(|&x| x ^ 1).collect();
+                o[first + 1][0] = words[0];
                 o
             })
             .collect();
         let views: Vec<&[Vec<u64>]> = quiet.iter().map(|o| o.as_slice()).collect();
-        let t = &sibling_tests(&cfg, &views, first)[0];
+        let t = &sibling_tests(&cfg, &views, first)[1];
         assert_eq!((t.statistic, t.p_value), (0.0, 1.0));
+        assert!(PairLemma.what().contains("differing only at r"));
     }
 
     #[test]
