@@ -35,8 +35,8 @@ pub const SIBLING_SEEDS: u64 = 200;
 const SIBLING_VALUES: u32 = 255;
 
 /// For each r with at least two full digits below it: a random word and the words that differ
-/// from it only at digit r (every other value up to base 256, else 255 of them in order from
-/// a random offset).
+/// from it only at digit r: every other value up to base 256, else 255 of them, in order from
+/// a random offset.
 fn sibling_sets(cfg: &LawConfig) -> Vec<(u32, Vec<u64>)> {
     let tree = &cfg.tree;
     let b = tree.b();
@@ -46,11 +46,8 @@ fn sibling_sets(cfg: &LawConfig) -> Vec<(u32, Vec<u64>)> {
         .map(|r| {
             let u = tree.random_word(&mut rng);
             let ur = tree.digit(u, r);
-            let start = if b - 1 > SIBLING_VALUES {
-                rng.bounded(b - 1)
-            } else {
-                0
-            };
+            // A random rotation of the other values (all of them up to base 256).
+            let start = rng.bounded(b - 1);
             let mut words = vec![u];
             words.extend(
                 (0..(b - 1).min(SIBLING_VALUES))
