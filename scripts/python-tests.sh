@@ -17,7 +17,11 @@ export PATH="$PWD/$venv/bin:$PATH"
 # Mitsuba 3 for the rendering tests (gartowen.mitsuba, gartowen.render; libLLVM comes from
 # scripts/prerequisites.sh).
 python -m pip install -q --disable-pip-version-check "maturin>=1.9,<2" numpy scipy pytest "mitsuba>=3.5"
-python -m pip install -q --disable-pip-version-check --no-build-isolation ./python
+# Built in the dev profile (opt-level 2, as the tests), so it reuses the test build's crates
+# instead of compiling the workspace once more in release; a user's `pip install ./python`
+# builds release.
+MATURIN_PEP517_ARGS="--profile dev" \
+  python -m pip install -q --disable-pip-version-check --no-build-isolation ./python
 
 if [ -z "${GARTOWEN_BIN:-}" ]; then
   [ -x target/debug/gartowen ] || cargo build -q -p gartowen-cli
