@@ -5,6 +5,7 @@ mod adversarial;
 mod art;
 mod certificates;
 mod check;
+mod check_witness;
 mod clobbering;
 mod containment;
 mod discrepancy;

@@ -74,9 +74,10 @@ fn words32(points: &PointSet, base: CheckBase, m: u32) -> Result<(u32, Vec<u32>)
             }
         }
     };
+    let columns: Vec<&[u64]> = (0..points.dims()).map(|j| points.column(j)).collect();
     let mut words = Vec::with_capacity(points.len() * points.dims());
     for i in 0..points.len() {
-        words.extend(points.point(i).iter().map(|&x| (x >> shift) as u32));
+        words.extend(columns.iter().map(|c| (c[i] >> shift) as u32));
     }
     Ok((w - shift, words))
 }
