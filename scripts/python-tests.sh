@@ -3,6 +3,8 @@
 # user installs it (`pip install ./python`), then runs its pytest suite against the CLI built
 # by `cargo test` (target/debug/gartowen). Needs python3 ≥ 3.9 with venv, and PyPI for
 # maturin, numpy, scipy and pytest on the first run.
+# Usage: python-tests.sh [--dependencies]   (--dependencies: only the venv and PyPI's packages,
+# which scripts/test-all.sh fetches while cargo compiles)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -17,6 +19,7 @@ export PATH="$PWD/$venv/bin:$PATH"
 # Mitsuba 3 for the rendering tests (gartowen.mitsuba, gartowen.render; libLLVM comes from
 # scripts/prerequisites.sh).
 python -m pip install -q --disable-pip-version-check "maturin>=1.9,<2" numpy scipy pytest "mitsuba>=3.5"
+[ "${1:-}" = --dependencies ] && exit 0
 # Built in the dev profile (opt-level 2, as the tests), so it reuses the test build's crates
 # instead of compiling the workspace once more in release; a user's `pip install ./python`
 # builds release.

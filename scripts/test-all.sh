@@ -1,30 +1,60 @@
 #!/usr/bin/env bash
 # Runs every test of gartowen: unit, property, integration, CLI end-to-end, doctests and the
 # exhaustive 2^32-word float test (all in the test profile, opt-level 2), the Python package's
-# pytest suite, then the Coq proofs
-# when proofs/ has theories. Exits non-zero on the first failure.
+# pytest suite, then the Coq proofs when proofs/ has theories. Exits non-zero when any part
+# fails.
+#
+# On 2 cores the parts overlap where they leave a core idle: PyPI's downloads for the Python
+# package run while cargo compiles, and the proofs (coqc, one core) run beside pytest (one
+# core). The proofs wait for the Rust tests, whose differential tests compile the same theories
+# into proofs/ through proofs/extract.sh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 # Prerequisites first: a missing tool stops the run in seconds, not after the tests.
 scripts/prerequisites.sh
+logs=target/test-all
+mkdir -p "$logs"
+background=()
+# A failure in the foreground ends the run: stop what still runs beside it.
+trap 'for p in "${background[@]}"; do kill "$p" 2>/dev/null || true; done' EXIT
+# finish PID NAME LOG: waits for a background part; on failure shows its log and stops.
+finish() {
+  if ! wait "$1"; then
+    sed 's/^/  /' "$3" >&2
+    echo "test-all: $2 FAILED (its output above, kept in $3)" >&2
+    exit 1
+  fi
+}
+
 # Each phase is timed; the last line says where the time went (the README quotes it).
 started=$(date +%s)
 # lap VAR: seconds since the last lap into VAR (no subshell, so the clock moves on).
 lap() { local now; now=$(date +%s); printf -v "$1" %d $(( now - started )); started=$now; }
+
+scripts/python-tests.sh --dependencies > "$logs/python-dependencies.log" 2>&1 &
+dependencies_pid=$!
+background+=("$dependencies_pid")
 cargo test --workspace --no-run -q
 lap build_s
 cargo test --workspace --no-fail-fast
 lap rust_s
+finish "$dependencies_pid" "the Python package's dependencies" "$logs/python-dependencies.log"
 
+proofs_pid=
+if [ -x proofs/check.sh ]; then
+  proofs/check.sh > "$logs/proofs.log" 2>&1 &
+  proofs_pid=$!
+  background+=("$proofs_pid")
+fi
 # The Python package: built with maturin into target/pyvenv, tested with pytest.
 scripts/python-tests.sh
 lap python_s
-
-proofs_s=0
-if [ -x proofs/check.sh ]; then
-  proofs/check.sh
-  lap proofs_s
+proofs_after=0
+if [ -n "$proofs_pid" ]; then
+  finish "$proofs_pid" "the proofs" "$logs/proofs.log"
+  cat "$logs/proofs.log"
+  lap proofs_after
 fi
 echo "test-all: building the Rust tests ${build_s} s, running them ${rust_s} s, the Python" \
-  "package and pytest ${python_s} s, the proofs ${proofs_s} s"
+  "package and pytest ${python_s} s with the proofs beside them, the proofs ${proofs_after} s more"

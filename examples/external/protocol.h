@@ -41,6 +41,18 @@ static void put_le(unsigned char *p, uint64_t v, unsigned n) {
     for (unsigned i = 0; i < n; i++) p[i] = (unsigned char)(v >> (8 * i));
 }
 
+/* Replaces the word at p (n bytes, little-endian) with its image. */
+static inline void serve_word(unsigned char *p, unsigned n, unsigned width, uint32_t base,
+                              uint32_t dim, uint64_t seed) {
+    uint64_t x = get_le(p, n);
+    uint64_t y = scramble(x, width, base, dim, seed);
+#ifdef SCRAMBLED_BITS
+    uint64_t low = (width - SCRAMBLED_BITS >= 64) ? ~0ull : (1ull << (width - SCRAMBLED_BITS)) - 1;
+    y = (y & ~low) | (x & low);
+#endif
+    put_le(p, y, n);
+}
+
 static int serve(const char *self) {
     unsigned char header[32];
     static unsigned char buf[8u << 20];
@@ -78,14 +90,12 @@ static int serve(const char *self) {
         memcpy(reply_header, "GOWR", 4);
         put_le(reply_header + 4, count, 4);
         fwrite(reply_header, 1, sizeof reply_header, stdout);
-        for (uint32_t i = 0; i < count; i++) {
-            uint64_t x = get_le(buf + i * wb, wb);
-            uint64_t y = scramble(x, width, base, dim, seed);
-#ifdef SCRAMBLED_BITS
-            uint64_t low = (width - SCRAMBLED_BITS >= 64) ? ~0ull : (1ull << (width - SCRAMBLED_BITS)) - 1;
-            y = (y & ~low) | (x & low);
-#endif
-            put_le(buf + i * wb, y, wb);
+        /* One loop per word size, so the byte loops of get_le and put_le unroll into single
+         * loads and stores (the per-word cost of a fast scramble is otherwise in them). */
+        if (wb == 4) {
+            for (uint32_t i = 0; i < count; i++) serve_word(buf + 4 * i, 4, width, base, dim, seed);
+        } else {
+            for (uint32_t i = 0; i < count; i++) serve_word(buf + 8 * i, 8, width, base, dim, seed);
         }
         fwrite(buf, wb, count, stdout);
         fflush(stdout);
