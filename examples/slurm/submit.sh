@@ -18,8 +18,8 @@
 # array).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-wait=()
-if [ "${1:-}" = --wait ]; then wait=(--wait); shift; fi
+wait=0
+if [ "${1:-}" = --wait ]; then wait=1; shift; fi
 usage="usage: submit.sh [--wait] verify N OUT [verify options...] | submit.sh [--wait] check LIST OUT"
 kind="${1:?$usage}"
 command -v sbatch >/dev/null || { echo "submit.sh: sbatch not found: is this a Slurm login node?" >&2; exit 2; }
@@ -41,8 +41,35 @@ submit_pair() {
     { echo "submit.sh: sbatch did not take the array (its message is above)" >&2; return 2; }
   array="${array%%;*}"
   echo "array $array: $tasks $name task(s); $join_script after it:" >&2
-  sbatch --parsable "${wait[@]}" --dependency="afterany:$array" --kill-on-invalid-dep=yes \
-    --output="$(pattern "$out/logs/$join_log")" "$here/$join_script" "$@"
+  local join
+  join=$(sbatch --parsable --dependency="afterany:$array" --kill-on-invalid-dep=yes \
+    --output="$(pattern "$out/logs/$join_log")" "$here/$join_script" "$@") ||
+    { echo "submit.sh: sbatch did not take the joining job (its message is above)" >&2; return 2; }
+  join="${join%%;*}"
+  echo "$join"
+  [ "$wait" = 1 ] || return 0
+  wait_for "$join"
+}
+# wait_for JOB: returns JOB's exit code once it has ended (2 when it was cancelled, killed by a
+# signal or its record is gone). Polled every second: `sbatch --wait` doubles its polling
+# interval up to 32 s, which made a 10-second array wait half a minute more.
+wait_for() {
+  local info state code
+  while :; do
+    info=$(scontrol show job -o "$1" 2>&1) ||
+      { echo "submit.sh: job $1 is no longer known to Slurm: $info" >&2; return 2; }
+    state=$(sed -n 's/.*JobState=\([A-Z_]*\).*/\1/p' <<<"$info")
+    case "$state" in
+      PENDING|RUNNING|CONFIGURING|COMPLETING|SUSPENDED|REQUEUED|RESIZING|"") sleep 1 ;;
+      *)
+        code=$(sed -n 's/.*ExitCode=\([0-9]*\):\([0-9]*\).*/\1 \2/p' <<<"$info")
+        case "$state $code" in
+          "COMPLETED "*|"FAILED "*" 0") return "${code%% *}" ;;
+          *) echo "submit.sh: job $1 ended $state (exit code ${code:-unknown})" >&2; return 2 ;;
+        esac
+        ;;
+    esac
+  done
 }
 
 case "$kind" in
