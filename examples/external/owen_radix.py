@@ -41,28 +41,37 @@ def digits_in(base, width):
 
 
 def scramble(words, base, width, dim, seed, per_depth):
-    """Images of `words` (uint64 integers below base^m) under the node permutations."""
+    """Images of `words` (uint64 integers below base^m) under the node permutations.
+
+    All m depths at once, in blocks of words: the digits, the prefixes above each digit and
+    the node keys are (words, m) arrays and the digit keys (words, m, b), so a request costs
+    a few dozen NumPy calls instead of a few dozen per digit."""
     m = digits_in(base, width)
+    x = np.asarray(words).astype(np.uint64).ravel()
+    block = max(1, (1 << 21) // (m * base))
+    return np.concatenate(
+        [_scramble_block(x[i:i + block], base, m, dim, seed, per_depth)
+         for i in range(0, len(x), block)] or [x]
+    ).reshape(np.shape(words))
+
+
+def _scramble_block(x, base, m, dim, seed, per_depth):
     b = np.uint64(base)
+    # place[d] = b^(m-1-d): the weight of digit d, most significant first.
+    place = np.array([base ** (m - 1 - d) for d in range(m)], dtype=np.uint64)
+    digit = (x[:, None] // place[None, :]) % b
+    prefix = x[:, None] // (place[None, :] * b)  # the digits above digit d, as an integer
     dim_key = mix64(np.array([(seed * 0x9E3779B97F4A7C15 + dim + 1) & MASK], dtype=np.uint64))
+    depth = np.arange(1, m + 1, dtype=np.uint64)
+    node = np.broadcast_to(mix64(dim_key + depth * np.uint64(0x9E3779B97F4A7C15)), digit.shape)
+    if not per_depth:
+        node = mix64(node ^ mix64(prefix + np.uint64(0x632BE59BD9B4E019)))
+    # keys[i, d, c]: the key of digit value c at word i's depth-d node; an image is a rank.
     offsets = np.arange(base, dtype=np.uint64) * np.uint64(0xD1B54A32D192ED03)
-    x = words.astype(np.uint64)
-    prefix = np.zeros_like(x)
-    out = np.zeros_like(x)
-    place = base ** (m - 1)
-    for depth in range(m):
-        digit = (x // np.uint64(place)) % b
-        node = mix64(dim_key + np.array([depth + 1], dtype=np.uint64) * np.uint64(0x9E3779B97F4A7C15))
-        if not per_depth:
-            node = mix64(node ^ mix64(prefix + np.uint64(0x632BE59BD9B4E019)))
-        # keys[i, d]: the key of digit d at word i's node; the image of d is its rank.
-        keys = mix64(np.broadcast_to(node, x.shape)[:, None] ^ offsets[None, :])
-        mine = np.take_along_axis(keys, digit.astype(np.int64)[:, None], axis=1)
-        image = (keys < mine).sum(axis=1).astype(np.uint64)
-        out = out * b + image
-        prefix = prefix * b + digit
-        place //= base
-    return out
+    keys = mix64(node[:, :, None] ^ offsets[None, None, :])
+    mine = np.take_along_axis(keys, digit.astype(np.int64)[:, :, None], axis=2)
+    image = (keys < mine).sum(axis=2, dtype=np.uint64)
+    return (image * place[None, :]).sum(axis=1, dtype=np.uint64)
 
 
 def serve(per_depth):

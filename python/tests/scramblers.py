@@ -47,6 +47,33 @@ def seed_key(seed, dim):
     return np.uint64(hash_words_int(seed, dim))
 
 
+def owen_per_bit(words, dim, seed):
+    """Elementwise in (words, seed): with a (rows, 1) array of seeds and (rows, n) words, row i
+    is seed i's scramble (``gartowen.verify(..., batch_seeds=True)``). Every level at once, in
+    blocks of words, because the battery calls it thousands of times (a loop over the levels
+    costs a thousand NumPy calls per call); above 2^14 words the level loop in place is faster."""
+    if words.size > 1 << 14:
+        return _owen_per_bit_by_level(words, dim, seed)
+    width = 32 if words.dtype == np.uint32 else 64
+    x = words.astype(np.uint64)
+    key = seed_key(seed, dim)
+    x, key = (np.ascontiguousarray(a).ravel() for a in np.broadcast_arrays(x, key))
+    k = np.arange(width, dtype=np.uint64)
+    # (x >> 1) >> (width - 1 - k) is x's top k bits, 0 at k = 0 (a shift by the whole width is
+    # not defined).
+    shift = np.uint64(width - 1) - k
+    level = (k << np.uint64(58)) & np.uint64(MASK)
+    y = np.empty_like(x)
+    block = 1 << 12
+    for i in range(0, len(x), block):
+        xs = x[i:i + block]
+        # bit k flipped by mix64(key ^ mix64(level ^ prefix)) & 1.
+        z = mix64(((xs >> np.uint64(1))[:, None] >> shift[None, :]) ^ level[None, :])
+        z = mix64(z ^ key[i:i + block, None]) & np.uint64(1)
+        y[i:i + block] = xs ^ (z << shift[None, :]).sum(axis=1, dtype=np.uint64)
+    return y.reshape(np.broadcast(words, seed_key(seed, dim)).shape).astype(words.dtype)
+
+
 def _mix64_inplace(z, tmp):
     """mix64 written into z, with tmp (same shape) as scratch: no temporaries per step."""
     for shift, mult in ((30, _M1), (27, _M2), (31, None)):
@@ -56,11 +83,9 @@ def _mix64_inplace(z, tmp):
             np.multiply(z, mult, out=z)
 
 
-def owen_per_bit(words, dim, seed):
-    """Elementwise in (words, seed): with a (rows, 1) array of seeds and (rows, n) words, row i
-    is seed i's scramble (``gartowen.verify(..., batch_seeds=True)``). Written in place (one
-    scratch pair of arrays for all 32 or 64 levels) because the battery calls it with millions
-    of words."""
+def _owen_per_bit_by_level(words, dim, seed):
+    """owen_per_bit level by level, in place (one scratch pair of arrays for all 32 or 64
+    levels): the faster form for millions of words."""
     width = 32 if words.dtype == np.uint32 else 64
     x = words.astype(np.uint64)
     key = seed_key(seed, dim)
