@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Prints the import cycles between modules of one crate, the Rust files over the size limit,
-and the locked dependencies that need a newer Rust than the workspace's declared rust-version.
+the locked dependencies that need a newer Rust than the workspace's declared rust-version, and
+the shared crates whose features differ between the test build and the Python package's.
 
 Modules are files (src/a.rs and src/a/mod.rs are module `a`, src/a/b.rs is `a::b`). A file
 depends on every module its `crate::`, `super::` and `self::` paths name (the longest prefix
@@ -9,7 +10,10 @@ modules is counted between the children of their lowest common ancestor that con
 a parent using its child (or a child its parent) is layering, not a cycle; a cycle is a set of
 sibling modules that reach each other. The declared rust-version is the MSRV: clippy's
 `incompatible_msrv` lint checks the standard library calls against it, this script the
-dependencies of Cargo.lock. Exit status 1 when anything is found, 0 otherwise.
+dependencies of Cargo.lock. The test command builds the Python package with the feature
+test-build so that it reuses the test build: a crate both builds compile with different
+features is compiled twice, with everything above it. Exit status 1 when anything is found,
+0 otherwise.
 
 Usage: scripts/house-check.py [--max-lines N] [--skip-dependencies] [ROOT]
 """
@@ -226,7 +230,8 @@ def main(argv):
         print("  none")
     untiered = ignored_outside_the_large_tier(root)
     newer = 0 if skip_dependencies else msrv_violations(root)
-    return 1 if bad or over or untiered or newer else 0
+    unshared = 0 if skip_dependencies else unshared_python_build(root)
+    return 1 if bad or over or untiered or newer or unshared else 0
 
 
 def rust_files(root):
@@ -288,6 +293,50 @@ def msrv_violations(root):
         if need and version_key(need) > version_key(msrv):
             found += 1
             print(f"  {p['name']} {p['version']} needs Rust {need}")
+    if found == 0:
+        print("  none")
+    return found
+
+
+def crate_features(root, args):
+    """{(name, version): features} of the packages `cargo tree ARGS` resolves, or None."""
+    tree = subprocess.run(
+        ["cargo", "tree", "-q", "--locked", "--offline", "--prefix", "none",
+         "-f", "{p} [{f}]", "-e", "features,normal,build"] + args,
+        cwd=root, capture_output=True, text=True,
+    )
+    if tree.returncode != 0:
+        print("  cargo tree failed: " + (tree.stderr.strip().splitlines() or ["?"])[-1])
+        return None
+    found = {}
+    for line in tree.stdout.splitlines():
+        m = re.match(r"(\S+) (v\S+)(?: \([^)]*\))?(?: \(\*\))? \[(.*)\]", line.strip())
+        if m:
+            found[(m.group(1), m.group(2))] = m.group(3)
+    return found
+
+
+def unshared_python_build(root):
+    """Crates the Python package (with test-build) compiles with other features than the tests."""
+    manifest = os.path.join(root, "python", "Cargo.toml")
+    if not os.path.exists(manifest) or "test-build" not in open(manifest, encoding="utf-8").read():
+        return 0
+    print("crates the test build and the Python package (feature test-build) compile differently:")
+    tests = crate_features(root, ["--workspace", "-e", "dev"])
+    package = crate_features(root, ["-p", "gartowen-python", "--features", "extension-module,test-build"])
+    if tests is None or package is None:
+        return 1
+    # pyo3's family is the package's alone (the tests never link Python), and the package itself
+    # has its own features.
+    own = ("pyo3", "pyo3-ffi", "pyo3-build-config", "pyo3-macros", "pyo3-macros-backend",
+           "gartowen-python")
+    found = 0
+    for key, features in sorted(package.items()):
+        if key[0] in own or key not in tests or tests[key] == features:
+            continue
+        found += 1
+        print(f"  {key[0]} {key[1]}: tests [{tests[key]}], Python package [{features}]"
+              " (python/Cargo.toml's test-build)")
     if found == 0:
         print("  none")
     return found

@@ -20,10 +20,10 @@ export PATH="$PWD/$venv/bin:$PATH"
 # scripts/prerequisites.sh).
 python -m pip install -q --disable-pip-version-check "maturin>=1.9,<2" numpy scipy pytest "mitsuba>=3.5"
 [ "${1:-}" = --dependencies ] && exit 0
-# Built in the dev profile (opt-level 2, as the tests), so it reuses the test build's crates
-# instead of compiling the workspace once more in release; a user's `pip install ./python`
-# builds release.
-MATURIN_PEP517_ARGS="--profile dev" \
+# Built in the dev profile (opt-level 2, as the tests) with the feature test-build (the features
+# the test build unifies, python/Cargo.toml), so it reuses the test build's crates and compiles
+# only pyo3, numpy and the package itself; a user's `pip install ./python` builds release.
+MATURIN_PEP517_ARGS="--profile dev --features test-build" \
   python -m pip install -q --disable-pip-version-check --no-build-isolation ./python
 
 if [ -z "${GARTOWEN_BIN:-}" ]; then
