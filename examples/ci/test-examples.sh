@@ -5,11 +5,11 @@
 # - the quick `verify` job fails for the right reason: lk-hash claims Owen in the example but is
 #   not one (the JUnit names pair-law); so the gate works on the user's program;
 # - every exhaustive shard and the merge pass, and the merged certificate covers every 32-bit
-#   word of dimensions 0..3 of the user's program (external), with its JUnit;
+#   word of dimensions 0..1 of the user's program (external) in 4 pieces, with its JUnit;
 # - the GitHub merge job without its checkout step fails ("not a directory"), as does the
 #   GitLab pipeline without submodules: a missing checkout or path fails here, not in the
 #   user's pipeline.
-# Usage: test-examples.sh GARTOWEN_BINARY [WORK_DIR]   (about 4 minutes per example on 2 cores)
+# Usage: test-examples.sh GARTOWEN_BINARY [WORK_DIR]   (about 2 minutes per example on 2 cores)
 # Needs git, cc, python3 with PyYAML. Exit 0 all as expected, 1 otherwise (named).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -46,14 +46,24 @@ expect_status() { # FILE STATUS JOB
 }
 merged_ok() { # CERTIFICATE JUNIT
   "$py" - "$1" "$2" <<'PY' || fail=1
-import json, sys, xml.etree.ElementTree as ET
+import json, re, sys, xml.etree.ElementTree as ET
 cert = json.load(open(sys.argv[1]))
 text = json.dumps(cert)
 assert cert["verdict"] == "pass", f"merged verdict {cert['verdict']}"
 assert "external" in text and "my_scrambler" in text, "the merged certificate is not about the user's program"
 cases = list(ET.parse(sys.argv[2]).getroot().iter("testcase"))
 assert len(cases) == 4 and not any(c.find("failure") is not None for c in cases), "JUnit: 4 passing dimension pieces expected"
-print(f"merged: pass, 4 dimension pieces, {sys.argv[1]}")
+# The pieces tile dimensions 0 and 1, each from its first chunk to its last.
+pieces = {}
+for c in cases:
+    dim, start, end = map(int, re.fullmatch(r"dim (\d+) chunks (\d+)\.\.(\d+)", c.get("name")).groups())
+    pieces.setdefault(dim, []).append((start, end))
+assert sorted(pieces) == [0, 1], f"dimensions {sorted(pieces)}, not 0 and 1"
+for dim, runs in pieces.items():
+    runs.sort()
+    assert runs[0][0] == 0 and all(a[1] == b[0] for a, b in zip(runs, runs[1:])), f"dim {dim}: {runs}"
+    assert runs[-1][1] == max(e for r in pieces.values() for _, e in r), f"dim {dim} stops early: {runs}"
+print(f"merged: pass, dimensions 0..1 in 4 pieces, {sys.argv[1]}")
 PY
 }
 
