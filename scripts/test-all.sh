@@ -5,9 +5,9 @@
 # fails.
 #
 # On 2 cores the parts overlap where they leave a core idle: PyPI's downloads for the Python
-# package run while cargo compiles, and the proofs (coqc, one core; a copy of the sources in a
-# temporary folder, apart from the theories proofs/extract.sh builds for the Rust tests) run
-# beside the Rust tests and pytest, filling the gaps where a test waits or runs on one thread.
+# package run while cargo compiles, and the proofs (coqc, one core, on a copy of the sources in
+# a temporary folder, apart from the theories proofs/extract.sh builds for the Rust tests) run
+# beside the Python package's build and pytest (one core).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -37,16 +37,18 @@ dependencies_pid=$!
 background+=("$dependencies_pid")
 cargo test --workspace --no-run -q
 lap build_s
+cargo test --workspace --no-fail-fast
+lap rust_s
+finish "$dependencies_pid" "the Python package's dependencies" "$logs/python-dependencies.log"
+
+# Not beside the Rust tests: some of them bound how long a stalled program takes to be killed,
+# and a third busy process on two cores pushed one past its bound.
 proofs_pid=
 if [ -x proofs/check.sh ]; then
   proofs/check.sh > "$logs/proofs.log" 2>&1 &
   proofs_pid=$!
   background+=("$proofs_pid")
 fi
-cargo test --workspace --no-fail-fast
-lap rust_s
-finish "$dependencies_pid" "the Python package's dependencies" "$logs/python-dependencies.log"
-
 # The Python package: built with maturin into target/pyvenv, tested with pytest.
 scripts/python-tests.sh
 lap python_s
@@ -57,4 +59,4 @@ if [ -n "$proofs_pid" ]; then
   lap proofs_after
 fi
 echo "test-all: building the Rust tests ${build_s} s, running them ${rust_s} s, the Python" \
-  "package and pytest ${python_s} s (the proofs beside both), the proofs ${proofs_after} s more"
+  "package and pytest ${python_s} s with the proofs beside them, the proofs ${proofs_after} s more"

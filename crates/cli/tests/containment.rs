@@ -84,85 +84,62 @@ fn run_bounded(args: &[String], limit: Duration, case: &str) -> std::process::Ou
 fn a_never_reading_a_stop_reading_and_a_self_stopping_program_end_in_time_at_every_level() {
     let dir = tempfile::tempdir().unwrap();
     let program = stalling(dir.path());
-    let mut cases = Vec::new();
     for level in ["quick", "full", "exhaustive"] {
         for (mode, answers) in [("never", 0), ("stop", 111), ("sigstop", 111), ("stop", 3)] {
-            cases.push((level, mode, answers));
+            let case = format!("{mode} after {answers} replies at --level {level}");
+            let pidfile = dir.path().join(format!("{mode}-{answers}-{level}.pid"));
+            let command = format!(
+                "{} {mode} {answers} {}",
+                program.display(),
+                pidfile.display()
+            );
+            let mut args = vec![
+                "verify".to_string(),
+                "--external".into(),
+                command,
+                "--level".into(),
+                level.into(),
+                "--timeout".into(),
+                TIMEOUT_SECONDS.to_string(),
+            ];
+            if level == "exhaustive" {
+                args.extend(["--dims".into(), "0".into()]);
+            }
+            let start = Instant::now();
+            let out = run_bounded(&args, Duration::from_secs(60), &case);
+            let took = start.elapsed();
+            let stdout = String::from_utf8_lossy(&out.stdout);
+            let stderr = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(out.status.code(), Some(3), "{case}: {stdout}{stderr}");
+            assert!(
+                took <= Duration::from_secs(2 * TIMEOUT_SECONDS + 5),
+                "{case}: took {took:?}"
+            );
+            let text = format!("{stdout}{stderr}");
+            assert!(
+                text.contains("within 1 s") && text.contains("killed"),
+                "{case}: the failure names the timeout: {text}"
+            );
+            let groups: Vec<u32> = std::fs::read_to_string(&pidfile)
+                .unwrap()
+                .lines()
+                .map(|l| l.parse().unwrap())
+                .collect();
+            assert!(!groups.is_empty(), "{case}: the program never started");
+            // The kill is done before verify exits; allow the kernel a moment to reap.
+            let left = || {
+                groups
+                    .iter()
+                    .flat_map(|&g| members(g))
+                    .collect::<Vec<u32>>()
+            };
+            let waited = Instant::now();
+            while !left().is_empty() && waited.elapsed() < Duration::from_secs(2) {
+                std::thread::sleep(Duration::from_millis(20));
+            }
+            assert_eq!(left(), Vec::<u32>::new(), "{case}: left running");
         }
     }
-    // Each case mostly waits out its timeout: four run at once (a failed assertion in one
-    // fails the test when its thread is joined).
-    let next = std::sync::atomic::AtomicUsize::new(0);
-    let run_one = |(level, mode, answers): (&str, &str, u32)| {
-        let case = format!("{mode} after {answers} replies at --level {level}");
-        let pidfile = dir.path().join(format!("{mode}-{answers}-{level}.pid"));
-        let command = format!(
-            "{} {mode} {answers} {}",
-            program.display(),
-            pidfile.display()
-        );
-        let mut args = vec![
-            "verify".to_string(),
-            "--external".into(),
-            command,
-            "--level".into(),
-            level.into(),
-            "--timeout".into(),
-            TIMEOUT_SECONDS.to_string(),
-        ];
-        if level == "exhaustive" {
-            args.extend(["--dims".into(), "0".into()]);
-        }
-        let start = Instant::now();
-        let out = run_bounded(&args, Duration::from_secs(60), &case);
-        let took = start.elapsed();
-        let stdout = String::from_utf8_lossy(&out.stdout);
-        let stderr = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(3), "{case}: {stdout}{stderr}");
-        assert!(
-            took <= Duration::from_secs(2 * TIMEOUT_SECONDS + 5),
-            "{case}: took {took:?}"
-        );
-        let text = format!("{stdout}{stderr}");
-        assert!(
-            text.contains("within 1 s") && text.contains("killed"),
-            "{case}: the failure names the timeout: {text}"
-        );
-        let groups: Vec<u32> = std::fs::read_to_string(&pidfile)
-            .unwrap()
-            .lines()
-            .map(|l| l.parse().unwrap())
-            .collect();
-        assert!(!groups.is_empty(), "{case}: the program never started");
-        // The kill is done before verify exits; allow the kernel a moment to reap.
-        let left = || {
-            groups
-                .iter()
-                .flat_map(|&g| members(g))
-                .collect::<Vec<u32>>()
-        };
-        let waited = Instant::now();
-        while !left().is_empty() && waited.elapsed() < Duration::from_secs(2) {
-            std::thread::sleep(Duration::from_millis(20));
-        }
-        assert_eq!(left(), Vec::<u32>::new(), "{case}: left running");
-    };
-    std::thread::scope(|s| {
-        let runners: Vec<_> = (0..4)
-            .map(|_| {
-                s.spawn(|| {
-                    while let Some(&case) =
-                        cases.get(next.fetch_add(1, std::sync::atomic::Ordering::Relaxed))
-                    {
-                        run_one(case);
-                    }
-                })
-            })
-            .collect();
-        for r in runners {
-            r.join().unwrap();
-        }
-    });
 }
 
 /// Whether `pid` is a live (not zombie) process.
