@@ -319,8 +319,11 @@ def crate_features(root, args):
 def unshared_python_build(root):
     """Crates the Python package (with test-build) compiles with other features than the tests."""
     manifest = os.path.join(root, "python", "Cargo.toml")
-    if not os.path.exists(manifest) or "test-build" not in open(manifest, encoding="utf-8").read():
+    if not os.path.exists(manifest):
         return 0
+    with open(manifest, encoding="utf-8") as fh:
+        if "test-build" not in fh.read():
+            return 0
     print("crates the test build and the Python package (feature test-build) compile differently:")
     tests = crate_features(root, ["--workspace", "-e", "dev"])
     package = crate_features(root, ["-p", "gartowen-python", "--features", "extension-module,test-build"])
