@@ -156,10 +156,20 @@ fn quick_report_writes_figures_and_the_baseline_gate_works() {
         .iter()
         .all(|r| r["ns_record"].as_f64().unwrap() > 0.0));
 
-    // The same seeds reproduce every error figure; doctor the baseline to be better than
-    // possible so that this run regresses.
+    // The baseline gate on the stored report (`--compare`, the same rules as a run with
+    // --baseline): against itself nothing regresses; against a baseline doctored to be
+    // better than possible it regresses, exit 1, each regression named.
+    let a_json = path("a/report.json");
+    let o = gartowen(&["report", "--compare", &a_json, "--baseline", &a_json]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(String::from_utf8_lossy(&o.stdout).contains(" 0 regressions"));
     let mut v: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(path("a/report.json")).unwrap()).unwrap();
+        serde_json::from_str(&std::fs::read_to_string(&a_json).unwrap()).unwrap();
     for m in v["methods"].as_array_mut().unwrap() {
         for c in m["curves"].as_array_mut().unwrap() {
             for r in c["rmse"].as_array_mut().unwrap() {
@@ -168,26 +178,10 @@ fn quick_report_writes_figures_and_the_baseline_gate_works() {
         }
     }
     std::fs::write(path("better.json"), v.to_string()).unwrap();
-    // A baseline with empty lists compares nothing: refused (it once passed every run).
-    let mut empty = v.clone();
-    empty["methods"] = serde_json::json!([]);
-    empty["speed"] = serde_json::json!([]);
-    std::fs::write(path("empty.json"), empty.to_string()).unwrap();
     let o = gartowen(&[
         "report",
-        "--quick",
-        "--out",
-        &path("e"),
-        "--baseline",
-        &path("empty.json"),
-    ]);
-    assert_eq!(o.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("nothing to compare"));
-    let o = gartowen(&[
-        "report",
-        "--quick",
-        "--out",
-        &path("b"),
+        "--compare",
+        &a_json,
         "--baseline",
         &path("better.json"),
     ]);
@@ -197,24 +191,34 @@ fn quick_report_writes_figures_and_the_baseline_gate_works() {
         text.contains("REGRESSION") && text.contains("RMSE at N = 16384"),
         "{text}"
     );
-    // Error figures are deterministic: the second run's RMSE equal the first's.
-    let a: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(path("a/report.json")).unwrap()).unwrap();
-    let b: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(path("b/report.json")).unwrap()).unwrap();
-    for (ma, mb) in a["methods"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .zip(b["methods"].as_array().unwrap())
-    {
-        for (ca, cb) in ma["curves"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .zip(mb["curves"].as_array().unwrap())
-        {
-            assert_eq!(ca["rmse"], cb["rmse"]);
-        }
+    // A baseline with empty lists compares nothing: refused, before any work in a run (it
+    // once passed every run).
+    let mut empty = v.clone();
+    empty["methods"] = serde_json::json!([]);
+    empty["speed"] = serde_json::json!([]);
+    std::fs::write(path("empty.json"), empty.to_string()).unwrap();
+    for args in [
+        vec!["--quick", "--out", &path("e")],
+        vec!["--compare", &a_json],
+    ] {
+        let o = gartowen(&[&["report"], &args[..], &["--baseline", &path("empty.json")]].concat());
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert!(String::from_utf8_lossy(&o.stderr).contains("nothing to compare"));
     }
+    // A baseline that shares no row with the report: refused, exit 2.
+    let mut other = v.clone();
+    for m in other["methods"].as_array_mut().unwrap() {
+        m["label"] = serde_json::json!(format!("renamed-{}", m["label"].as_str().unwrap()));
+    }
+    other["speed"] = serde_json::json!([]);
+    std::fs::write(path("other.json"), other.to_string()).unwrap();
+    let o = gartowen(&[
+        "report",
+        "--compare",
+        &a_json,
+        "--baseline",
+        &path("other.json"),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("nothing can be compared"));
 }

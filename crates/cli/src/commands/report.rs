@@ -3,9 +3,9 @@
 use crate::CliError;
 use clap::Args;
 use gartowen_bench::report::{
-    build_report, read_baseline, write_report, ReportConfig, ReportError,
+    build_report, read_baseline, write_report, Regression, Report, ReportConfig, ReportError,
 };
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 /// Write the speed-against-error report: report.md, report.json and PNG figures.
@@ -23,24 +23,32 @@ use std::process::ExitCode;
 /// "different", or "inconclusive: about K seeds needed".
 ///
 /// With --baseline, compares with an earlier report.json and exits 1 when a slope, an RMSE
-/// or a speed ratio regresses beyond the noise threshold stated in the report.
+/// or a speed ratio regresses beyond the noise threshold stated in the report. With
+/// --compare, compares a stored report.json with the baseline instead of running (a CI gate
+/// on the report job's artifact): the same rules and exit codes, nothing written.
 ///
 /// Examples:
 ///   gartowen report --out report --quick           (under a minute on 2 cores)
 ///   gartowen report --out report                   (the full report, about 13 min on 2 cores)
 ///   gartowen report --out new --baseline old/report.json
+///   gartowen report --compare new/report.json --baseline old/report.json
 #[derive(Args, Debug)]
 #[command(verbatim_doc_comment)]
 pub struct ReportArgs {
     /// Output directory (created if missing).
-    #[arg(long)]
-    pub out: PathBuf,
+    #[arg(long, required_unless_present = "compare")]
+    pub out: Option<PathBuf>,
     /// Smaller N, fewer replicates and methods.
     #[arg(long)]
     pub quick: bool,
     /// An earlier report.json to compare with (exit 1 on a regression).
     #[arg(long)]
     pub baseline: Option<PathBuf>,
+    /// A stored report.json to compare with --baseline instead of running a report (exit 1
+    /// on a regression, 0 without one; writes nothing).
+    #[arg(long, value_name = "REPORT_JSON", requires = "baseline",
+          conflicts_with_all = ["out", "quick", "seed", "margin"])]
+    pub compare: Option<PathBuf>,
     /// Master seed of the replicates.
     #[arg(long, default_value_t = 2026)]
     pub seed: u64,
@@ -60,17 +68,24 @@ fn cli_error(e: ReportError) -> CliError {
 
 /// Runs `report`.
 pub fn run(a: ReportArgs) -> Result<ExitCode, CliError> {
+    let Some(out) = &a.out else {
+        // clap requires --out unless --compare, and --compare requires --baseline.
+        let (Some(current), Some(baseline)) = (&a.compare, &a.baseline) else {
+            unreachable!("clap requires --out or --compare with --baseline")
+        };
+        return compare_stored(current, baseline);
+    };
     if let Some(b) = &a.baseline {
         use crate::paths::{named, refuse_input_inside};
-        refuse_input_inside(named("--baseline", b), named("--out", &a.out))?;
+        refuse_input_inside(named("--baseline", b), named("--out", out))?;
     }
     // Read the baseline first: a bad one is a usage error before minutes of work.
     let baseline = match &a.baseline {
         Some(p) => Some(read_baseline(p).map_err(cli_error)?),
         None => None,
     };
-    std::fs::create_dir_all(&a.out)
-        .map_err(|e| CliError::Io(format!("cannot create {}: {e}", a.out.display())))?;
+    std::fs::create_dir_all(out)
+        .map_err(|e| CliError::Io(format!("cannot create {}: {e}", out.display())))?;
     let registry = gartowen::registry();
     let report = build_report(
         &registry,
@@ -83,23 +98,17 @@ pub fn run(a: ReportArgs) -> Result<ExitCode, CliError> {
     )
     .map_err(cli_error)?;
     if let (Some(b), Some(path)) = (&baseline, &a.baseline) {
-        if gartowen_bench::report::comparable_rows(b, &report) == 0 {
-            return Err(CliError::Usage(format!(
-                "--baseline {}: no method, integrand or scrambler of it is in this run, so \
-                 nothing can be compared (a report of another --quick setting or version?)",
-                path.display()
-            )));
-        }
+        refuse_incomparable(b, &report, path)?;
     }
-    let staging = gartowen_bench::report::staging_dir(&a.out);
+    let staging = gartowen_bench::report::staging_dir(out);
     crate::cleanup::register(&staging);
-    let written = write_report(&report, &registry, &a.out, baseline.as_ref());
+    let written = write_report(&report, &registry, out, baseline.as_ref());
     crate::cleanup::unregister(&staging);
     let regressions = written.map_err(cli_error)?;
     let (methods, fits) = (report.methods_missing_slopes(), report.missed_slopes());
     crate::outln!(
         "report in {} ({} methods, {:.1} s); scrambled methods missing the predicted slope: {}",
-        a.out.display(),
+        out.display(),
         report.methods.len(),
         report.seconds,
         if methods.is_empty() {
@@ -112,7 +121,43 @@ pub fn run(a: ReportArgs) -> Result<ExitCode, CliError> {
             )
         }
     );
-    for r in &regressions {
+    regression_status(&regressions)
+}
+
+/// `report --compare CURRENT --baseline BASELINE`: the baseline gate on two stored reports.
+fn compare_stored(current: &Path, baseline: &Path) -> Result<ExitCode, CliError> {
+    let old = read_baseline(baseline).map_err(cli_error)?;
+    let now = read_baseline(current).map_err(|e| match e {
+        ReportError::Baseline(m) => CliError::Usage(format!("--compare: {m}")),
+        other => cli_error(other),
+    })?;
+    refuse_incomparable(&old, &now, baseline)?;
+    let regressions = gartowen_bench::report::compare(&old, &now);
+    crate::outln!(
+        "{} against {}: {} comparable rows, {} regressions",
+        current.display(),
+        baseline.display(),
+        gartowen_bench::report::comparable_rows(&old, &now),
+        regressions.len()
+    );
+    regression_status(&regressions)
+}
+
+/// A baseline that shares no row with the report would pass every run: a usage error.
+fn refuse_incomparable(baseline: &Report, report: &Report, path: &Path) -> Result<(), CliError> {
+    if gartowen_bench::report::comparable_rows(baseline, report) == 0 {
+        return Err(CliError::Usage(format!(
+            "--baseline {}: no method, integrand or scrambler of it is in this run, so \
+             nothing can be compared (a report of another --quick setting or version?)",
+            path.display()
+        )));
+    }
+    Ok(())
+}
+
+/// Prints one line per regression; exit 1 with any, 0 without.
+fn regression_status(regressions: &[Regression]) -> Result<ExitCode, CliError> {
+    for r in regressions {
         crate::outln!(
             "REGRESSION {}: {:.4e} -> {:.4e} ({})",
             r.what,
