@@ -110,6 +110,7 @@ class Runner:
         self.gartowen = os.path.abspath(args.gartowen)
         self.artifacts = os.path.join(self.work, "artifacts")
         self.only = args.only
+        self.overrides = dict(v.split("=", 1) for v in args.variable)
         if args.artifacts_from:
             shutil.copytree(args.artifacts_from, self.artifacts)
         os.makedirs(self.artifacts, exist_ok=True)
@@ -269,7 +270,9 @@ def run_gitlab(runner, doc, log):
             if any(status.get(j) not in ("passed", "not run") for j in sources):
                 status[name] = "skipped"
                 continue
-            env_vars = dict(variables, **{k: str(v) for k, v in (job.get("variables") or {}).items()})
+            # Variables given when the pipeline runs take precedence over the file's.
+            env_vars = dict(variables, **{k: str(v) for k, v in (job.get("variables") or {}).items()},
+                            **runner.overrides)
             count = int(job.get("parallel", 1))
             failed_any = False
             for index in range(1, count + 1):
@@ -311,7 +314,17 @@ def main():
     p.add_argument("--work", required=True, help="an empty folder for workspaces and artifacts")
     p.add_argument("--only", help="run this job alone")
     p.add_argument("--artifacts-from", help="the artifacts folder of an earlier run (with --only)")
+    p.add_argument("--variable", action="append", default=[], metavar="NAME=VALUE",
+                   help="GitLab: a variable given when the pipeline runs (overrides the file's)")
     args = p.parse_args()
+    bad = [v for v in args.variable if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*=.*", v)]
+    if bad:
+        print(f"run-locally: --variable {bad[0]!r} is not NAME=VALUE", file=sys.stderr)
+        return 2
+    if args.variable and args.kind != "gitlab":
+        print("run-locally: --variable is for GitLab pipelines (GitHub workflows take none here)",
+              file=sys.stderr)
+        return 2
     if os.path.exists(args.work) and os.listdir(args.work):
         print(f"run-locally: --work {args.work} is not empty", file=sys.stderr)
         return 2

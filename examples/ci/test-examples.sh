@@ -5,7 +5,10 @@
 # - the quick `verify` job fails for the right reason: lk-hash claims Owen in the example but is
 #   not one (the JUnit names pair-law); so the gate works on the user's program;
 # - every exhaustive shard and the merge pass, and the merged certificate covers every 32-bit
-#   word of dimensions 0..1 of the user's program (external) in 4 pieces, with its JUnit;
+#   word of the swept dimensions of the user's program (external) in 4 pieces, with its JUnit:
+#   dimensions 0..1 for GitHub, as written; the GitLab pipeline sweeps the same words with the
+#   same command, so it runs with SWEEP_DIMS=0..0 given as a pipeline variable (half the time,
+#   and the override path checked);
 # - the GitHub merge job without its checkout step fails ("not a directory"), as does the
 #   GitLab pipeline without submodules: a missing checkout or path fails here, not in the
 #   user's pipeline.
@@ -44,8 +47,8 @@ run() { # KIND PIPELINE WORK [run-locally options]: its exit code, its status li
 expect_status() { # FILE STATUS JOB
   grep -q -x -E "$2 +$3" "$1" || bad "$(basename "$1"): job '$3' is not $2: $(tr '\n' ';' < "$1")"
 }
-merged_ok() { # CERTIFICATE JUNIT
-  "$py" - "$1" "$2" <<'PY' || fail=1
+merged_ok() { # CERTIFICATE JUNIT LAST_DIMENSION
+  "$py" - "$1" "$2" "$3" <<'PY' || fail=1
 import json, re, sys, xml.etree.ElementTree as ET
 cert = json.load(open(sys.argv[1]))
 text = json.dumps(cert)
@@ -53,31 +56,34 @@ assert cert["verdict"] == "pass", f"merged verdict {cert['verdict']}"
 assert "external" in text and "my_scrambler" in text, "the merged certificate is not about the user's program"
 cases = list(ET.parse(sys.argv[2]).getroot().iter("testcase"))
 assert len(cases) == 4 and not any(c.find("failure") is not None for c in cases), "JUnit: 4 passing dimension pieces expected"
-# The pieces tile dimensions 0 and 1, each from its first chunk to its last.
+# The pieces tile dimensions 0 to the last swept, each from its first chunk to its last.
+dims = list(range(int(sys.argv[3]) + 1))
 pieces = {}
 for c in cases:
     dim, start, end = map(int, re.fullmatch(r"dim (\d+) chunks (\d+)\.\.(\d+)", c.get("name")).groups())
     pieces.setdefault(dim, []).append((start, end))
-assert sorted(pieces) == [0, 1], f"dimensions {sorted(pieces)}, not 0 and 1"
-last = max(end for runs in pieces.values() for _, end in runs)
+assert sorted(pieces) == dims, f"dimensions {sorted(pieces)}, not {dims}"
+# Every word: a 32-bit dimension is swept in 2^12 chunks (its 12-bit prefixes).
+last = 1 << 12
 for dim, runs in pieces.items():
     runs.sort()
     assert runs[0][0] == 0 and all(a[1] == b[0] for a, b in zip(runs, runs[1:])), f"dim {dim}: {runs}"
     assert runs[-1][1] == last, f"dim {dim} stops early: {runs}"
-print(f"merged: pass, dimensions 0..1 in 4 pieces, {sys.argv[1]}")
+print(f"merged: pass, dimensions 0..{dims[-1]} in 4 pieces, {sys.argv[1]}")
 PY
 }
 
 for kind in github gitlab; do
   pipeline="$here/$([ $kind = github ] && echo github-actions.yml || echo gitlab-ci.yml)"
-  rc=0; run "$kind" "$pipeline" "$work/$kind" || rc=$?
+  if [ $kind = github ]; then last_dim=1; override=(); else last_dim=0; override=(--variable SWEEP_DIMS=0..0); fi
+  rc=0; run "$kind" "$pipeline" "$work/$kind" "${override[@]}" || rc=$?
   [ "$rc" = 1 ] || bad "$kind: run-locally exited $rc, not 1 (the verify job fails): $(cat "$work/$kind.err")"
   expect_status "$work/$kind.status" failed verify
   grep -q 'FAIL pair-law' "$work/$kind/log.txt" || bad "$kind: the verify job did not fail on pair-law"
   grep -q 'failure' "$work/$kind/artifacts/"*/verify.xml || bad "$kind: verify.xml records no failure"
   expect_status "$work/$kind.status" passed exhaustive
   expect_status "$work/$kind.status" passed merge
-  merged_ok "$(ls "$work/$kind/artifacts/"*/exhaustive.json)" "$(ls "$work/$kind/artifacts/"*/exhaustive.xml)"
+  merged_ok "$(ls "$work/$kind/artifacts/"*/exhaustive.json)" "$(ls "$work/$kind/artifacts/"*/exhaustive.xml)" "$last_dim"
 done
 
 # The GitHub merge job without its checkout: fails at the install step, named.

@@ -224,76 +224,79 @@ pub fn loglog_lines_banded(
     reference_slopes: &[f64],
 ) -> Result<(), FigureError> {
     register_fonts();
-    let root = BitMapBackend::new(path, (900, 620)).into_drawing_area();
-    let mut chart = log_log_chart(&root, title, x_desc, y_desc, series, 1.0)?;
-    let (x_range, y_range) = chart_ranges(series, 1.0);
-    let x_end = series
-        .iter()
-        .flat_map(|s| s.points.iter())
-        .map(|p| p.0)
-        .fold(f64::MIN, f64::max);
-    if let Some(&(ax, ay)) = series.first().and_then(|s| s.points.first()) {
-        for (k, &slope) in reference_slopes.iter().enumerate() {
-            let grey = RGBColor(150, 150, 150);
-            let style = ShapeStyle::from(&grey).stroke_width(1 + k as u32);
-            let Some(line) = reference_segment((ax, ay), slope, x_end, x_range, y_range) else {
-                continue;
-            };
-            chart
-                .draw_series(LineSeries::new(line, style))
-                .map_err(fail)?
-                .label(format!("slope {slope}"))
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
-        }
-    }
-    for (i, (s, band)) in series.iter().zip(bands).enumerate() {
-        // The band as one polygon: the high ends left to right, the low ends back.
-        let mut outline: Vec<(f64, f64)> = s
-            .points
+    crate::png::png_figure(path, (900, 620), |root| {
+        let mut chart = log_log_chart(&root, title, x_desc, y_desc, series, 1.0)?;
+        let (x_range, y_range) = chart_ranges(series, 1.0);
+        let x_end = series
             .iter()
-            .zip(band)
-            .map(|(p, b)| (p.0, b.1.min(y_range.1)))
-            .collect();
-        outline.extend(
-            s.points
+            .flat_map(|s| s.points.iter())
+            .map(|p| p.0)
+            .fold(f64::MIN, f64::max);
+        if let Some(&(ax, ay)) = series.first().and_then(|s| s.points.first()) {
+            for (k, &slope) in reference_slopes.iter().enumerate() {
+                let grey = RGBColor(150, 150, 150);
+                let style = ShapeStyle::from(&grey).stroke_width(1 + k as u32);
+                let Some(line) = reference_segment((ax, ay), slope, x_end, x_range, y_range) else {
+                    continue;
+                };
+                chart
+                    .draw_series(LineSeries::new(line, style))
+                    .map_err(fail)?
+                    .label(format!("slope {slope}"))
+                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
+            }
+        }
+        for (i, (s, band)) in series.iter().zip(bands).enumerate() {
+            // The band as one polygon: the high ends left to right, the low ends back.
+            let mut outline: Vec<(f64, f64)> = s
+                .points
                 .iter()
                 .zip(band)
-                .rev()
-                .map(|(p, b)| (p.0, b.0.max(y_range.0))),
-        );
-        if outline
-            .iter()
-            .all(|p| p.0 > 0.0 && p.1 > 0.0 && p.1.is_finite())
-        {
+                .map(|(p, b)| (p.0, b.1.min(y_range.1)))
+                .collect();
+            outline.extend(
+                s.points
+                    .iter()
+                    .zip(band)
+                    .rev()
+                    .map(|(p, b)| (p.0, b.0.max(y_range.0))),
+            );
+            if outline
+                .iter()
+                .all(|p| p.0 > 0.0 && p.1 > 0.0 && p.1.is_finite())
+            {
+                chart
+                    .draw_series(std::iter::once(Polygon::new(
+                        outline,
+                        color(i).mix(0.15).filled(),
+                    )))
+                    .map_err(fail)?;
+            }
+        }
+        for (i, s) in series.iter().enumerate() {
+            let c = color(i);
+            let pts: Vec<(f64, f64)> = s.points.iter().copied().filter(|p| p.1 > 0.0).collect();
             chart
-                .draw_series(std::iter::once(Polygon::new(
-                    outline,
-                    color(i).mix(0.15).filled(),
-                )))
+                .draw_series(LineSeries::new(pts.clone(), c.stroke_width(2)))
+                .map_err(fail)?
+                .label(s.label.clone())
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(2))
+                });
+            chart
+                .draw_series(pts.into_iter().map(|p| Circle::new(p, 3, c.filled())))
                 .map_err(fail)?;
         }
-    }
-    for (i, s) in series.iter().enumerate() {
-        let c = color(i);
-        let pts: Vec<(f64, f64)> = s.points.iter().copied().filter(|p| p.1 > 0.0).collect();
         chart
-            .draw_series(LineSeries::new(pts.clone(), c.stroke_width(2)))
-            .map_err(fail)?
-            .label(s.label.clone())
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(2)));
-        chart
-            .draw_series(pts.into_iter().map(|p| Circle::new(p, 3, c.filled())))
+            .configure_series_labels()
+            .position(SeriesLabelPosition::LowerLeft)
+            .label_font((FONT, 12))
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .draw()
             .map_err(fail)?;
-    }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::LowerLeft)
-        .label_font((FONT, 12))
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .draw()
-        .map_err(fail)?;
-    root.present().map_err(fail)
+        Ok(())
+    })
 }
 
 /// Log-log points (one per series, its first point): the speed-against-error picture. Every
@@ -307,30 +310,31 @@ pub fn loglog_points(
     points: &[Series],
 ) -> Result<(), FigureError> {
     register_fonts();
-    let root = BitMapBackend::new(path, (900, 620)).into_drawing_area();
-    let mut chart = log_log_chart(&root, title, x_desc, y_desc, points, 3.0)?;
-    for (i, s) in points.iter().enumerate() {
-        let c = color(i);
-        let number = (i + 1).to_string();
+    crate::png::png_figure(path, (900, 620), |root| {
+        let mut chart = log_log_chart(&root, title, x_desc, y_desc, points, 3.0)?;
+        for (i, s) in points.iter().enumerate() {
+            let c = color(i);
+            let number = (i + 1).to_string();
+            chart
+                .draw_series(s.points.iter().take(1).map(|&p| {
+                    EmptyElement::at(p)
+                        + Circle::new((0, 0), 4, c.filled())
+                        + Text::new(number.clone(), (6, -6), (FONT, 12).into_font())
+                }))
+                .map_err(fail)?
+                .label(format!("{}: {}", i + 1, s.label))
+                .legend(move |(x, y)| Circle::new((x, y), 4, c.filled()));
+        }
         chart
-            .draw_series(s.points.iter().take(1).map(|&p| {
-                EmptyElement::at(p)
-                    + Circle::new((0, 0), 4, c.filled())
-                    + Text::new(number.clone(), (6, -6), (FONT, 12).into_font())
-            }))
-            .map_err(fail)?
-            .label(format!("{}: {}", i + 1, s.label))
-            .legend(move |(x, y)| Circle::new((x, y), 4, c.filled()));
-    }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font((FONT, 11))
-        .draw()
-        .map_err(fail)?;
-    root.present().map_err(fail)
+            .configure_series_labels()
+            .position(SeriesLabelPosition::UpperRight)
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .label_font((FONT, 11))
+            .draw()
+            .map_err(fail)?;
+        Ok(())
+    })
 }
 
 /// One panel of a point-set grid.
@@ -463,34 +467,35 @@ pub fn panel_grid(
         left + cell * cols as u32 + key_width,
         top + cell * rows.len() as u32,
     );
-    let root = BitMapBackend::new(path, size).into_drawing_area();
-    root.fill(&WHITE).map_err(fail)?;
-    root.draw(&Text::new(
-        title.to_string(),
-        (10, 8),
-        (FONT, 18).into_font(),
-    ))
-    .map_err(fail)?;
-    for (r, (label, panels)) in rows.iter().enumerate() {
-        let y = (top + cell * r as u32) as i32;
+    crate::png::png_figure(path, size, |root| {
+        root.fill(&WHITE).map_err(fail)?;
         root.draw(&Text::new(
-            label.clone(),
-            (6, y + cell as i32 / 2 - 8),
-            (FONT, 12).into_font(),
+            title.to_string(),
+            (10, 8),
+            (FONT, 18).into_font(),
         ))
         .map_err(fail)?;
-        for (c, panel) in panels.iter().enumerate() {
-            let x = (left + cell * c as u32) as i32;
-            let area = root.clone().shrink((x, y), (cell, cell));
-            let caption = column_labels.get(c).cloned().unwrap_or_default();
-            draw_panel(&area, &caption, panel)?;
+        for (r, (label, panels)) in rows.iter().enumerate() {
+            let y = (top + cell * r as u32) as i32;
+            root.draw(&Text::new(
+                label.clone(),
+                (6, y + cell as i32 / 2 - 8),
+                (FONT, 12).into_font(),
+            ))
+            .map_err(fail)?;
+            for (c, panel) in panels.iter().enumerate() {
+                let x = (left + cell * c as u32) as i32;
+                let area = root.clone().shrink((x, y), (cell, cell));
+                let caption = column_labels.get(c).cloned().unwrap_or_default();
+                draw_panel(&area, &caption, panel)?;
+            }
         }
-    }
-    if key {
-        let x = (left + cell * cols as u32 + 30) as i32;
-        draw_grey_key(&root, (x, top as i32 + 30), 200)?;
-    }
-    root.present().map_err(fail)
+        if key {
+            let x = (left + cell * cols as u32 + 30) as i32;
+            draw_grey_key(&root, (x, top as i32 + 30), 200)?;
+        }
+        Ok(())
+    })
 }
 
 /// All pairs of `dims` coordinates as a matrix: cell (row i, column j) for i < j shows the
@@ -509,40 +514,40 @@ pub fn pair_matrix(
     let cell = 112u32;
     let (left, top, key_width) = (30u32, 40u32, 120u32);
     let side = cell * dims as u32;
-    let root =
-        BitMapBackend::new(path, (left + side + key_width, top + side + 10)).into_drawing_area();
-    root.fill(&WHITE).map_err(fail)?;
-    root.draw(&Text::new(
-        title.to_string(),
-        (10, 8),
-        (FONT, 16).into_font(),
-    ))
-    .map_err(fail)?;
-    for i in 0..dims {
-        for j in i + 1..dims {
-            let pts = scatter(i, j);
-            let at = |r: usize, c: usize| {
-                root.clone().shrink(
-                    (
-                        (left + cell * c as u32) as i32,
-                        (top + cell * r as u32) as i32,
-                    ),
-                    (cell, cell),
-                )
-            };
-            draw_panel(
-                &at(i, j),
-                &format!("dims {i},{j}"),
-                &Panel::Scatter(pts.clone()),
-            )?;
-            let values = spectrum(i, j);
-            draw_panel(
-                &at(j, i),
-                &format!("spectrum {i},{j}"),
-                &Panel::Spectrum { values, max_freq },
-            )?;
+    crate::png::png_figure(path, (left + side + key_width, top + side + 10), |root| {
+        root.fill(&WHITE).map_err(fail)?;
+        root.draw(&Text::new(
+            title.to_string(),
+            (10, 8),
+            (FONT, 16).into_font(),
+        ))
+        .map_err(fail)?;
+        for i in 0..dims {
+            for j in i + 1..dims {
+                let pts = scatter(i, j);
+                let at = |r: usize, c: usize| {
+                    root.clone().shrink(
+                        (
+                            (left + cell * c as u32) as i32,
+                            (top + cell * r as u32) as i32,
+                        ),
+                        (cell, cell),
+                    )
+                };
+                draw_panel(
+                    &at(i, j),
+                    &format!("dims {i},{j}"),
+                    &Panel::Scatter(pts.clone()),
+                )?;
+                let values = spectrum(i, j);
+                draw_panel(
+                    &at(j, i),
+                    &format!("spectrum {i},{j}"),
+                    &Panel::Spectrum { values, max_freq },
+                )?;
+            }
         }
-    }
-    draw_grey_key(&root, ((left + side + 40) as i32, top as i32 + 40), 240)?;
-    root.present().map_err(fail)
+        draw_grey_key(&root, ((left + side + 40) as i32, top as i32 + 40), 240)?;
+        Ok(())
+    })
 }

@@ -79,55 +79,56 @@ pub fn image_figure(
     let cols = renders.len() as i32 + 1;
     let width = (gap + cols * (cell + gap)) as u32;
     let height = (top + 2 * (cell + label + gap) + 30) as u32;
-    let root = BitMapBackend::new(path, (width, height)).into_drawing_area();
-    root.fill(&WHITE).map_err(fail)?;
-    let font = ("sans-serif", 13).into_font();
-    root.draw(&Text::new(
-        title.to_string(),
-        (gap, 10),
-        ("sans-serif", 16).into_font(),
-    ))
-    .map_err(fail)?;
-    let max = reference.iter().copied().fold(0.0, f64::max).max(1e-12);
-    let err_max = renders
-        .iter()
-        .flat_map(|(_, r)| r.iter().zip(reference).map(|(a, b)| (a - b).abs()))
-        .filter(|e| e.is_finite())
-        .fold(0.0, f64::max)
-        .max(1e-12);
-    let draw = |col: i32, row: i32, caption: &str, color: &dyn Fn(usize) -> RGBColor| {
-        let x0 = gap + col * (cell + gap);
-        let y0 = top + row * (cell + label + gap) + label;
+    crate::png::png_figure(path, (width, height), |root| {
+        root.fill(&WHITE).map_err(fail)?;
+        let font = ("sans-serif", 13).into_font();
         root.draw(&Text::new(
-            caption.to_string(),
-            (x0, y0 - label),
+            title.to_string(),
+            (gap, 10),
+            ("sans-serif", 16).into_font(),
+        ))
+        .map_err(fail)?;
+        let max = reference.iter().copied().fold(0.0, f64::max).max(1e-12);
+        let err_max = renders
+            .iter()
+            .flat_map(|(_, r)| r.iter().zip(reference).map(|(a, b)| (a - b).abs()))
+            .filter(|e| e.is_finite())
+            .fold(0.0, f64::max)
+            .max(1e-12);
+        let draw = |col: i32, row: i32, caption: &str, color: &dyn Fn(usize) -> RGBColor| {
+            let x0 = gap + col * (cell + gap);
+            let y0 = top + row * (cell + label + gap) + label;
+            root.draw(&Text::new(
+                caption.to_string(),
+                (x0, y0 - label),
+                font.clone(),
+            ))
+            .map_err(fail)?;
+            for k in 0..side * side {
+                // Row 0 of the image (lowest y) at the bottom, as the plane is seen from above.
+                let (i, j) = ((k % side) as i32, (side - 1 - k / side) as i32);
+                let (x, y) = (x0 + i * scale, y0 + j * scale);
+                root.draw(&Rectangle::new(
+                    [(x, y), (x + scale, y + scale)],
+                    color(k).filled(),
+                ))
+                .map_err(fail)?;
+            }
+            Ok::<(), FigureError>(())
+        };
+        draw(0, 0, "reference", &|k| grey(reference[k], max))?;
+        for (c, (name, img)) in renders.iter().enumerate() {
+            draw(c as i32 + 1, 0, name, &|k| grey(img[k], max))?;
+            draw(c as i32 + 1, 1, "error", &|k| {
+                diverging(img[k] - reference[k], err_max)
+            })?;
+        }
+        root.draw(&Text::new(
+            format!("error maps: blue −{err_max:.3}, white 0, red +{err_max:.3}"),
+            (gap, height as i32 - 24),
             font.clone(),
         ))
         .map_err(fail)?;
-        for k in 0..side * side {
-            // Row 0 of the image (lowest y) at the bottom, as the plane is seen from above.
-            let (i, j) = ((k % side) as i32, (side - 1 - k / side) as i32);
-            let (x, y) = (x0 + i * scale, y0 + j * scale);
-            root.draw(&Rectangle::new(
-                [(x, y), (x + scale, y + scale)],
-                color(k).filled(),
-            ))
-            .map_err(fail)?;
-        }
-        Ok::<(), FigureError>(())
-    };
-    draw(0, 0, "reference", &|k| grey(reference[k], max))?;
-    for (c, (name, img)) in renders.iter().enumerate() {
-        draw(c as i32 + 1, 0, name, &|k| grey(img[k], max))?;
-        draw(c as i32 + 1, 1, "error", &|k| {
-            diverging(img[k] - reference[k], err_max)
-        })?;
-    }
-    root.draw(&Text::new(
-        format!("error maps: blue −{err_max:.3}, white 0, red +{err_max:.3}"),
-        (gap, height as i32 - 24),
-        font.clone(),
-    ))
-    .map_err(fail)?;
-    root.present().map_err(fail)
+        Ok(())
+    })
 }
