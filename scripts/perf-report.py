@@ -90,7 +90,7 @@ def timed(cmd, env=None):
 
 def criterion():
     log("criterion: scramblers bench (about 6 minutes after the build)")
-    sh(["cargo", "bench", "-q", "-p", "gartowen-bench", "--bench", "scramblers", "--",
+    sh(["cargo", "bench", "-q", "-p", "gartowen-benches", "--bench", "scramblers", "--",
         "scramble", "--warm-up-time", "1", "--measurement-time", "3"],
        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     out = sh([sys.executable, "scripts/criterion-table.py", "--group", "^scramble", "--json"],
@@ -302,7 +302,7 @@ def block(m, ns, rows, pc, pb, date):
            f"raw figures in [record/{date}-performance.json](../record/{date}-performance.json).",
            ""]
     if ns:
-        out += ["Criterion medians (`cargo bench -p gartowen-bench --bench scramblers`), ns per "
+        out += ["Criterion medians (`cargo bench -p gartowen-benches --bench scramblers`), ns per "
                 "32-bit coordinate. ART rows without a kernel named run the kernel the CPU picks "
                 "(with AVX-512, the narrow gather kernel); the rows naming a kernel run that one "
                 "on the same tables:", ""] + scrambler_table(ns) + [""]

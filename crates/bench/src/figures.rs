@@ -225,7 +225,7 @@ pub fn loglog_lines_banded(
 ) -> Result<(), FigureError> {
     register_fonts();
     crate::png::png_figure(path, (900, 620), |root| {
-        let mut chart = log_log_chart(&root, title, x_desc, y_desc, series, 1.0)?;
+        let mut chart = log_log_chart(root, title, x_desc, y_desc, series, 1.0)?;
         let (x_range, y_range) = chart_ranges(series, 1.0);
         let x_end = series
             .iter()
@@ -311,7 +311,7 @@ pub fn loglog_points(
 ) -> Result<(), FigureError> {
     register_fonts();
     crate::png::png_figure(path, (900, 620), |root| {
-        let mut chart = log_log_chart(&root, title, x_desc, y_desc, points, 3.0)?;
+        let mut chart = log_log_chart(root, title, x_desc, y_desc, points, 3.0)?;
         for (i, s) in points.iter().enumerate() {
             let c = color(i);
             let number = (i + 1).to_string();
@@ -492,7 +492,7 @@ pub fn panel_grid(
         }
         if key {
             let x = (left + cell * cols as u32 + 30) as i32;
-            draw_grey_key(&root, (x, top as i32 + 30), 200)?;
+            draw_grey_key(root, (x, top as i32 + 30), 200)?;
         }
         Ok(())
     })
@@ -547,7 +547,7 @@ pub fn pair_matrix(
                 )?;
             }
         }
-        draw_grey_key(&root, ((left + side + 40) as i32, top as i32 + 40), 240)?;
+        draw_grey_key(root, ((left + side + 40) as i32, top as i32 + 40), 240)?;
         Ok(())
     })
 }
