@@ -7,6 +7,8 @@ use plotters::prelude::*;
 use std::path::Path;
 use std::sync::Once;
 
+pub(crate) mod png;
+
 /// A figure that could not be drawn or written.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct FigureError(pub String);
@@ -224,7 +226,7 @@ pub fn loglog_lines_banded(
     reference_slopes: &[f64],
 ) -> Result<(), FigureError> {
     register_fonts();
-    crate::png::png_figure(path, (900, 620), |root| {
+    png::png_figure(path, (900, 620), |root| {
         let mut chart = log_log_chart(root, title, x_desc, y_desc, series, 1.0)?;
         let (x_range, y_range) = chart_ranges(series, 1.0);
         let x_end = series
@@ -310,7 +312,7 @@ pub fn loglog_points(
     points: &[Series],
 ) -> Result<(), FigureError> {
     register_fonts();
-    crate::png::png_figure(path, (900, 620), |root| {
+    png::png_figure(path, (900, 620), |root| {
         let mut chart = log_log_chart(root, title, x_desc, y_desc, points, 3.0)?;
         for (i, s) in points.iter().enumerate() {
             let c = color(i);
@@ -467,7 +469,7 @@ pub fn panel_grid(
         left + cell * cols as u32 + key_width,
         top + cell * rows.len() as u32,
     );
-    crate::png::png_figure(path, size, |root| {
+    png::png_figure(path, size, |root| {
         root.fill(&WHITE).map_err(fail)?;
         root.draw(&Text::new(
             title.to_string(),
@@ -514,7 +516,7 @@ pub fn pair_matrix(
     let cell = 112u32;
     let (left, top, key_width) = (30u32, 40u32, 120u32);
     let side = cell * dims as u32;
-    crate::png::png_figure(path, (left + side + key_width, top + side + 10), |root| {
+    png::png_figure(path, (left + side + key_width, top + side + 10), |root| {
         root.fill(&WHITE).map_err(fail)?;
         root.draw(&Text::new(
             title.to_string(),

@@ -7,7 +7,6 @@ pub mod fidelity;
 pub mod figures;
 pub mod harness;
 pub mod integrands;
-mod png;
 pub mod report;
 pub mod scene;
 pub mod spectrum;

@@ -79,7 +79,7 @@ pub fn image_figure(
     let cols = renders.len() as i32 + 1;
     let width = (gap + cols * (cell + gap)) as u32;
     let height = (top + 2 * (cell + label + gap) + 30) as u32;
-    crate::png::png_figure(path, (width, height), |root| {
+    crate::figures::png::png_figure(path, (width, height), |root| {
         root.fill(&WHITE).map_err(fail)?;
         let font = ("sans-serif", 13).into_font();
         root.draw(&Text::new(

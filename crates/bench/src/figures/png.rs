@@ -2,7 +2,7 @@
 //! (plotters' own file encoder needs the `image` crate, which took a tenth of every cold test
 //! build's CPU time for three formats of which the figures use one.)
 
-use crate::figures::FigureError;
+use super::FigureError;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
