@@ -369,6 +369,16 @@ def replace_block(path, text, begin=BEGIN, end=END):
     path.write_text(pattern.sub(lambda _: text, body, count=1))
 
 
+def record_date(kind):
+    """Today's date, or DATE-2, DATE-3, … when record/DATE-KIND.json is already taken (a later
+    run of the same day is recorded beside the earlier ones)."""
+    day = date = datetime.date.today().isoformat()
+    n = 2
+    while (ROOT / f"record/{date}-{kind}.json").exists():
+        date, n = f"{day}-{n}", n + 1
+    return date
+
+
 def cold_builds():
     """Wall seconds of the two cold builds, in a fresh clone of HEAD with an empty target/."""
     rows = {}
@@ -421,9 +431,7 @@ def main():
     if not os.path.exists("/usr/bin/time"):
         sys.exit("perf-report: /usr/bin/time is missing: apt-get install -y time")
     if args.only_cold_builds:
-        date, day, n = (datetime.date.today().isoformat(),) * 2 + (2,)
-        while (ROOT / f"record/{date}-cold-builds.json").exists():
-            date, n = f"{day}-{n}", n + 1
+        date = record_date("cold-builds")
         m = machine()
         cold = cold_builds()
         m["load_after"] = os.getloadavg()[0]
@@ -436,13 +444,9 @@ def main():
         raw = json.loads(pathlib.Path(args.from_json).read_text())
         date, m, ns = raw["date"], raw["machine"], raw["criterion_ns"]
         rows, pc, pb = raw["commands"], raw["perf_commands"], raw["python_bench"]
+        cold = None  # the cold builds have their own record, not re-rendered
     else:
-        date = datetime.date.today().isoformat()
-        # A later run of the same day is recorded beside the earlier ones (DATE-2, DATE-3, …).
-        n = 2
-        day = date
-        while (ROOT / f"record/{date}-performance.json").exists():
-            date, n = f"{day}-{n}", n + 1
+        date = record_date("performance")
         m = machine()
         log(f"{m['cpu']}, {m['cores']} cores, AVX-512: {m['avx512']}, "
             f"load {m['load_before']:.2f}")
@@ -462,6 +466,8 @@ def main():
     if args.dry_run:
         print(text)
         print(json.dumps(raw, indent=1))
+        if cold:
+            print(cold_block(m, cold, date))
         return
     (ROOT / f"record/{date}-performance.json").write_text(json.dumps(raw, indent=1) + "\n")
     (ROOT / f"record/{date}-performance.md").write_text(
@@ -469,8 +475,8 @@ def main():
         f"stands in docs/performance.md until the next run.\n\n"
         + text.replace("](../record/", "](") + "\n")
     replace_block(ROOT / "docs/performance.md", text)
-    if not args.from_json and cold:
-        write_cold(m, cold, date)
+    if cold:
+        write_cold(m, cold, record_date("cold-builds"))
     line = readme_line(m, rows, date)
     if line:
         replace_block(ROOT / "README.md", line)

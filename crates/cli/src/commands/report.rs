@@ -68,12 +68,15 @@ fn cli_error(e: ReportError) -> CliError {
 
 /// Runs `report`.
 pub fn run(a: ReportArgs) -> Result<ExitCode, CliError> {
-    let Some(out) = &a.out else {
-        // clap requires --out unless --compare, and --compare requires --baseline.
-        let (Some(current), Some(baseline)) = (&a.compare, &a.baseline) else {
-            unreachable!("clap requires --out or --compare with --baseline")
-        };
-        return compare_stored(current, baseline);
+    // clap requires --out unless --compare, and --compare requires --baseline.
+    let out = match (&a.out, &a.compare, &a.baseline) {
+        (Some(out), _, _) => out,
+        (None, Some(current), Some(baseline)) => return compare_stored(current, baseline),
+        _ => {
+            return Err(CliError::Usage(
+                "report needs --out, or --compare with --baseline".into(),
+            ))
+        }
     };
     if let Some(b) = &a.baseline {
         use crate::paths::{named, refuse_input_inside};
@@ -131,28 +134,28 @@ fn compare_stored(current: &Path, baseline: &Path) -> Result<ExitCode, CliError>
         ReportError::Baseline(m) => CliError::Usage(format!("--compare: {m}")),
         other => cli_error(other),
     })?;
-    refuse_incomparable(&old, &now, baseline)?;
+    let rows = refuse_incomparable(&old, &now, baseline)?;
     let regressions = gartowen_bench::report::compare(&old, &now);
     crate::outln!(
-        "{} against {}: {} comparable rows, {} regressions",
+        "{} against {}: {rows} comparable rows, {} regressions",
         current.display(),
         baseline.display(),
-        gartowen_bench::report::comparable_rows(&old, &now),
         regressions.len()
     );
     regression_status(&regressions)
 }
 
-/// A baseline that shares no row with the report would pass every run: a usage error.
-fn refuse_incomparable(baseline: &Report, report: &Report, path: &Path) -> Result<(), CliError> {
-    if gartowen_bench::report::comparable_rows(baseline, report) == 0 {
-        return Err(CliError::Usage(format!(
+/// The rows `report` shares with `baseline`; none is a usage error (such a baseline would pass
+/// every run).
+fn refuse_incomparable(baseline: &Report, report: &Report, path: &Path) -> Result<usize, CliError> {
+    match gartowen_bench::report::comparable_rows(baseline, report) {
+        0 => Err(CliError::Usage(format!(
             "--baseline {}: no method, integrand or scrambler of it is in this run, so \
              nothing can be compared (a report of another --quick setting or version?)",
             path.display()
-        )));
+        ))),
+        rows => Ok(rows),
     }
-    Ok(())
 }
 
 /// Prints one line per regression; exit 1 with any, 0 without.
