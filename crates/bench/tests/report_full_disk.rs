@@ -1,6 +1,7 @@
 //! A report that hits a full disk leaves its folder as it was (it once left new PNGs without
-//! report.md). Its own test binary: the file-size limit that stands in for a full disk
-//! applies to the whole process.
+//! report.md). The file-size limit that stands in for a full disk applies to the whole process,
+//! and `cargo test` runs this binary's other tests on its other threads: the test runs its body
+//! in a child process, this binary filtered to this one test.
 
 use crate::common;
 
@@ -23,8 +24,36 @@ fn snapshot(dir: &Path) -> BTreeMap<String, (u64, Vec<u8>)> {
         .collect()
 }
 
+/// Set in the child process that runs the body under the limit.
+const CHILD: &str = "GARTOWEN_FULL_DISK_CHILD";
+
 #[test]
 fn a_write_error_keeps_the_previous_report_whole_and_leaves_no_staging_folder() {
+    if std::env::var_os(CHILD).is_some() {
+        return under_a_file_size_limit();
+    }
+    // The test's name in this binary: its module path without the crate's name.
+    let module = module_path!().split_once("::").unwrap().1;
+    let name = format!(
+        "{module}::a_write_error_keeps_the_previous_report_whole_and_leaves_no_staging_folder"
+    );
+    let out = std::process::Command::new(std::env::current_exe().unwrap())
+        .args([name.as_str(), "--exact", "--test-threads", "1"])
+        .env(CHILD, "1")
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{stdout}{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // A filter that matched no test would pass too.
+    assert!(stdout.contains("1 passed"), "{stdout}");
+}
+
+/// Two reports into one folder, the second past a file-size limit, then without it.
+fn under_a_file_size_limit() {
     let registry = gartowen::registry();
     let dir = tempfile_dir();
     let first = common::report(-1.5, 1e-5, 2.0);

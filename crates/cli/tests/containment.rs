@@ -36,7 +36,9 @@ fn members(group: u32) -> Vec<u32> {
         .collect()
 }
 
-const TIMEOUT_SECONDS: u64 = 1;
+/// The per-request deadline given to verify. A quarter second keeps the twelve stalled runs
+/// short; a slow reply under load only makes the kill come sooner, with the same verdict.
+const TIMEOUT_SECONDS: f64 = 0.25;
 
 /// Runs gartowen with `args`; a run past `limit` is killed and fails the test (a hang must
 /// fail, not hold the test binary).
@@ -112,12 +114,12 @@ fn a_never_reading_a_stop_reading_and_a_self_stopping_program_end_in_time_at_eve
             let stderr = String::from_utf8_lossy(&out.stderr);
             assert_eq!(out.status.code(), Some(3), "{case}: {stdout}{stderr}");
             assert!(
-                took <= Duration::from_secs(2 * TIMEOUT_SECONDS + 5),
+                took <= Duration::from_secs_f64(2.0 * TIMEOUT_SECONDS + 5.0),
                 "{case}: took {took:?}"
             );
             let text = format!("{stdout}{stderr}");
             assert!(
-                text.contains("within 1 s") && text.contains("killed"),
+                text.contains(&format!("within {TIMEOUT_SECONDS} s")) && text.contains("killed"),
                 "{case}: the failure names the timeout: {text}"
             );
             let groups: Vec<u32> = std::fs::read_to_string(&pidfile)
