@@ -18,7 +18,9 @@ for p in "${patches[@]}"; do
   git apply --check "$p" || { echo "planted-bugs: $p does not apply to this tree" >&2; exit 2; }
   git apply "$p"; current="$p"
   verdicts=""
-  for t in extracted_checker::the_rust extracted_checker_large::; do
+  # The agreement tests only: extracted_checker_large's check that the patches apply fails
+  # while one is applied (its line is gone), which would count that bug as seen.
+  for t in extracted_checker::the_rust extracted_checker_large::the_net_checker; do
     if cargo test -q --test integration "$t" -- --include-ignored >/dev/null 2>&1; then
       verdicts+=" $t passed (unseen);"
     else
