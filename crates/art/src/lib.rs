@@ -19,7 +19,9 @@ pub mod registry;
 pub mod variants;
 
 pub use composed::QArtComposed;
-pub use engine::{ArtOwen, BatchKernel, BATCH_TABLES_AFTER_WORDS, BATCH_TABLE_BYTES};
+pub use engine::{
+    ArtOwen, BatchKernel, BATCH_TABLES_AFTER_WORDS, BATCH_TABLE_BYTES, STEP_TABLES_AFTER_WORDS,
+};
 pub use grammar::Grammar;
 pub use keyed::KeyedArt;
 #[cfg(feature = "mutants")]

@@ -68,7 +68,7 @@ pub struct ArtRecord {
     /// The entry stream.
     stream: Vec<u64>,
     /// GL(2,2) in increasing packed order, for Q-ART's index (static: 6 matrices, no table data).
-    gl2: Vec<Gf2Matrix>,
+    gl2: &'static [Gf2Matrix],
 }
 
 /// Reads `bits` (≤ 64) bits at bit `offset` of an LSB-first stream.
@@ -117,10 +117,10 @@ impl ArtRecord {
             ArtVariant::ArtOwen16P => (PsiLayout::Packed16, 64, w.min(32)),
             ArtVariant::Matrix(_) => (PsiLayout::Matrix, q * q, w),
         };
-        let gl2 = if layout == PsiLayout::Gl2Index {
-            Gf2Matrix::all_invertible(2)
+        let gl2: &'static [Gf2Matrix] = if layout == PsiLayout::Gl2Index {
+            crate::variants::gl2()
         } else {
-            Vec::new()
+            &[]
         };
         let n = grammar.symbols() as usize;
         let entry_bits = (psi_bits + code_bits) as usize;
@@ -278,6 +278,33 @@ impl ArtRecord {
                 .collect(),
         };
         Some(Permutation::from_images(&images).expect("a record's ψ is a bijection"))
+    }
+
+    /// Appends symbol `s`'s ψ images (ψ(0), …, ψ(2^q − 1)) to `out`, the values
+    /// [`ArtRecord::psi`] holds, without building the permutation; false (nothing appended)
+    /// where ψ is the identity for every symbol. An instance of the engine reads its ψ table
+    /// this way: a permutation per symbol was a fifth of its construction.
+    pub fn psi_images_into(&self, s: u32, out: &mut Vec<u8>) -> bool {
+        let q = self.variant.q();
+        match self.layout {
+            PsiLayout::Identity => return false,
+            PsiLayout::Matrix => {
+                // By linearity: the image of x is the image of x without its lowest set bit,
+                // XOR the image of that bit (column j is row parities with bit j).
+                let m = self.psi_field(s);
+                let columns: [u8; 8] = std::array::from_fn(|j| {
+                    (0..q).fold(0u8, |y, i| y | ((((m >> (q * i)) >> j) & 1) as u8) << i)
+                });
+                let start = out.len();
+                out.push(0);
+                for x in 1usize..1 << q {
+                    let below = out[start + (x & (x - 1))];
+                    out.push(below ^ columns[x.trailing_zeros() as usize]);
+                }
+            }
+            _ => out.extend((0..1u32 << q).map(|d| self.psi_apply(s, d) as u8)),
+        }
+        true
     }
 
     /// The scramble of the record's width-bit word `x` in dimension `dim`, read from the record

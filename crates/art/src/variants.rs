@@ -86,7 +86,7 @@ impl ArtVariant {
         match self {
             ArtVariant::ArtOwen2 | ArtVariant::Translation(_) => (None, rng.next_u64()),
             ArtVariant::QArt4 => {
-                let a = Gf2Matrix::all_invertible(2)[rng.bounded(6) as usize];
+                let a = gl2()[rng.bounded(6) as usize];
                 (Some(images(&|d| a.apply(d))), rng.next_u64())
             }
             ArtVariant::Matrix(_) => {
@@ -107,4 +107,11 @@ impl ArtVariant {
             }
         }
     }
+}
+
+/// GL(2,2) in increasing packed order (Q-ART's ψ group and its record's index), enumerated
+/// once: an instance draws ψ for each of its symbols.
+pub(crate) fn gl2() -> &'static [Gf2Matrix] {
+    static GL2: std::sync::OnceLock<Vec<Gf2Matrix>> = std::sync::OnceLock::new();
+    GL2.get_or_init(|| Gf2Matrix::all_invertible(2))
 }

@@ -98,7 +98,7 @@ fn the_digit_loop_equals_the_step_tables_on_every_width() {
     // The scalar path's step tables against the plain digit-by-digit loop: the batch tables
     // are built from the same steps, so this anchors both.
     for variant in ArtVariant::all() {
-        let art = ArtOwen::new(variant, 256, 5).unwrap();
+        let art = ArtOwen::new(variant, 256, 5).unwrap().with_step_tables();
         for bits in [3u32, 7, 16, 29, 32, 40, 64] {
             let width = Width::new(bits).unwrap();
             for x in words(9, 50) {
@@ -234,6 +234,62 @@ fn batch_tables_are_built_once_the_words_pay_for_them_and_change_no_output() {
     }
 }
 
+#[test]
+fn step_tables_are_built_once_the_words_pay_for_them_and_change_no_output() {
+    use gartowen_art::STEP_TABLES_AFTER_WORDS;
+    let after = STEP_TABLES_AFTER_WORDS as usize;
+    for variant in [
+        ArtVariant::ArtOwen2,
+        ArtVariant::QArt4,
+        ArtVariant::ArtOwen16P,
+        ArtVariant::Matrix(8),
+    ] {
+        let name = variant.name();
+        let reference = ArtOwen::new(variant, 256, 4).unwrap().with_step_tables();
+        let xs = words(3, after);
+        let expected = |width: Width, range: std::ops::Range<usize>| -> Vec<u64> {
+            xs[range]
+                .iter()
+                .map(|&x| reference.scramble_digit_by_digit(x & width.mask(), width, 5))
+                .collect()
+        };
+        let art = ArtOwen::new(variant, 256, 4).unwrap();
+        assert!(!art.step_tables_built(), "{name} built eagerly");
+        // Single words and a 64-bit batch (the scalar lanes) count towards the build.
+        let singles: Vec<u64> = xs[..100]
+            .iter()
+            .map(|&x| art.scramble(x, Width::W64, 5))
+            .collect();
+        assert_eq!(singles, expected(Width::W64, 0..100), "{name} single words");
+        let mut batch: Vec<u64> = xs[100..after - 1].to_vec();
+        art.scramble_batch(&mut batch, Width::W64, 5);
+        assert_eq!(batch, expected(Width::W64, 100..after - 1), "{name} batch");
+        assert!(!art.step_tables_built(), "{name} built one word early");
+        // A clone keeps the count: its next word pays as the original's would.
+        let twin = art.clone();
+        let last = xs[after - 1];
+        assert_eq!(
+            twin.scramble(last, Width::W64, 5),
+            expected(Width::W64, after - 1..after)[0]
+        );
+        assert!(
+            twin.step_tables_built() && !art.step_tables_built(),
+            "{name}"
+        );
+        assert_eq!(
+            art.scramble(last, Width::W64, 5),
+            expected(Width::W64, after - 1..after)[0]
+        );
+        assert!(art.step_tables_built(), "{name} never built");
+        // One call of that many words builds them at once, and a clone keeps them.
+        let fresh = ArtOwen::new(variant, 256, 4).unwrap();
+        let mut all: Vec<u64> = xs.iter().map(|&x| x & Width::W32.mask()).collect();
+        fresh.scramble_batch(&mut all, Width::W32, 5);
+        assert_eq!(all, expected(Width::W32, 0..after), "{name} one call");
+        assert!(fresh.step_tables_built() && fresh.clone().step_tables_built());
+    }
+}
+
 /// Words that share their leading bits in every amount: for each j in 0..=W, a run of words
 /// equal to one base above bit W − j and random below it (so a group of lanes shares exactly j
 /// bits, give or take the chance that every lane agrees on more), then runs of consecutive
@@ -316,7 +372,7 @@ fn words_sharing_leading_steps_equal_the_scalar_path() {
 #[test]
 fn a_fixed_table_keyed_by_other_seeds_equals_the_digit_loop() {
     for variant in ArtVariant::all() {
-        let art = ArtOwen::new(variant, 256, 7).unwrap();
+        let art = ArtOwen::new(variant, 256, 7).unwrap().with_step_tables();
         for width in [Width::W32, Width::W64] {
             let xs: Vec<u64> = words(variant.q() as u64, 300)
                 .into_iter()

@@ -163,7 +163,8 @@ fn imitation_peers_are_nested_with_translation_nodes_of_the_stated_structure() {
 fn step_table_path_equals_the_digit_by_digit_loop() {
     for v in all_variants() {
         for symbols in [6usize, 256] {
-            let s = ArtOwen::new(v, symbols, 31).unwrap();
+            let s = ArtOwen::new(v, symbols, 31).unwrap().with_step_tables();
+            assert!(s.step_tables_built());
             for width in [
                 Width::new(12).unwrap(),
                 Width::new(13).unwrap(),

@@ -6,6 +6,8 @@
 //! the family-wise false-alarm rate of a run is at most α (Bonferroni).
 
 use statrs::distribution::{ChiSquared, ContinuousCDF};
+use std::collections::BTreeMap;
+use std::sync::Mutex;
 
 /// The family-wise significance level of one `verify` run (all implementations, all tests).
 pub const FAMILY_ALPHA: f64 = 1e-3;
@@ -129,6 +131,33 @@ pub fn min_detectable_w(dof: usize, n: u64, alpha: f64) -> f64 {
     if dof == 0 || n == 0 {
         return f64::INFINITY;
     }
+    // A run asks for the same (dof, n, α) for every implementation and depth, and each answer
+    // costs about a hundred noncentral tails (an eighth of a quick run's time before), so
+    // answers are remembered: a pure function of its key, the same bits either way.
+    static KNOWN: Mutex<BTreeMap<(usize, u64, u64), f64>> = Mutex::new(BTreeMap::new());
+    let key = (dof, n, alpha.to_bits());
+    let table = || {
+        KNOWN
+            .lock()
+            .unwrap_or_else(|poisoned| poisoned.into_inner())
+    };
+    if let Some(&w) = table().get(&key) {
+        return w;
+    }
+    let w = detectable_w_uncached(dof, n, alpha);
+    let mut known = table();
+    if known.len() < KNOWN_CAPACITY {
+        known.insert(key, w);
+    }
+    w
+}
+
+/// At most this many answers of [`min_detectable_w`] are remembered (a run uses a few dozen
+/// keys; an entry is 32 bytes).
+const KNOWN_CAPACITY: usize = 4096;
+
+/// [`min_detectable_w`] computed afresh: bisection on the noncentrality λ.
+fn detectable_w_uncached(dof: usize, n: u64, alpha: f64) -> f64 {
     let critical = ChiSquared::new(dof as f64)
         .expect("dof ≥ 1")
         .inverse_cdf(1.0 - alpha);

@@ -120,6 +120,15 @@ static NO_BATCH_TABLES: BatchTables = BatchTables {
 #[derive(Debug, Default)]
 pub(super) struct WordsSeen(AtomicU64);
 
+impl WordsSeen {
+    /// Counts `more` words; the count after them.
+    pub(super) fn add(&self, more: usize) -> u64 {
+        self.0
+            .fetch_add(more as u64, Ordering::Relaxed)
+            .saturating_add(more as u64)
+    }
+}
+
 impl Clone for WordsSeen {
     fn clone(&self) -> Self {
         WordsSeen(AtomicU64::new(self.0.load(Ordering::Relaxed)))
@@ -309,12 +318,7 @@ impl ArtOwen {
         if let Some(t) = self.batch.get() {
             return Some(t);
         }
-        let seen = self
-            .batch_words
-            .0
-            .fetch_add(more as u64, Ordering::Relaxed)
-            .saturating_add(more as u64);
-        if seen >= BATCH_TABLES_AFTER_WORDS {
+        if self.batch_words.add(more) >= BATCH_TABLES_AFTER_WORDS {
             self.batch_tables()
         } else {
             None
@@ -322,11 +326,12 @@ impl ArtOwen {
     }
 
     /// This scrambler with its batch path walked by `kernel` (for tests and benchmarks; the
-    /// default is [`BatchKernel::detect`]), its batch tables built so that every batch call
-    /// walks that kernel. Returns `None` when this CPU cannot run it.
+    /// default is [`BatchKernel::detect`]), its batch and step tables built so that every
+    /// batch call walks that kernel. Returns `None` when this CPU cannot run it.
     pub fn with_kernel(&self, kernel: BatchKernel) -> Option<ArtOwen> {
         BatchKernel::available().contains(&kernel).then(|| {
             self.batch_tables();
+            self.step_tables();
             ArtOwen {
                 kernel,
                 ..self.clone()
@@ -355,6 +360,12 @@ impl ArtOwen {
                 7 => self.batch_lanes::<7, true, T>(t, words, width, key),
                 8 => self.batch_lanes::<8, true, T>(t, words, width, key),
                 _ => unreachable!("batch steps are 1 to 8 bits"),
+            }
+        } else if self.step_tables_for(words.len()).is_none() {
+            // Too few words yet to pay for the step tables: the digit-by-digit loop.
+            let (root, a, d) = ArtOwen::shifts_at(key, width);
+            for x in words.iter_mut() {
+                *x = T::put(self.finish_digits(x.get() ^ a, width, 0, root, 0, 0) ^ d);
             }
         } else {
             match self.q() * self.step_digits {
@@ -532,7 +543,8 @@ impl ArtOwen {
     ) -> [u64; LANES] {
         // Top-aligned words whose digits each step reads in place (see `PortableLanes`).
         let bits = x.map(|v| v << (64 - w));
-        let (contribution, next) = (&self.step_contribution[..], &self.step_next[..]);
+        let tables = self.step_tables();
+        let (contribution, next) = (&tables.contribution[..], &tables.next[..]);
         let mut s = [root; LANES];
         let mut acc = [0u64; LANES];
         for i in 0..steps {

@@ -34,8 +34,10 @@ mod batch;
 mod lanes;
 #[cfg(target_arch = "x86_64")]
 mod simd;
+mod steps;
 
 pub use batch::{BatchKernel, BATCH_TABLES_AFTER_WORDS, BATCH_TABLE_BYTES};
+pub use steps::STEP_TABLES_AFTER_WORDS;
 
 /// Chains the batch path advances together: enough independent loads in flight to hide an L2
 /// hit (one 512-bit register of the gather kernel).
@@ -108,11 +110,19 @@ impl ArtTables {
         let (mut psi, mut psi_inv) = (Vec::new(), Vec::new());
         for s in 0..grammar.symbols() {
             codes.push(record.code(s));
-            if let Some(p) = record.psi(s) {
-                psi.extend_from_slice(p.as_slice());
-                let inv = p.inverse();
-                psi_inv.extend_from_slice(&inv.as_slice()[..b]);
+            let start = psi.len();
+            if !record.psi_images_into(s, &mut psi) {
+                continue;
             }
+            let images = &psi[start..];
+            psi_inv.resize(start + b, 0);
+            for (d, &y) in images.iter().enumerate() {
+                psi_inv[start + y as usize] = d as u8;
+            }
+            assert!(
+                (0..b).all(|y| images[psi_inv[start + y] as usize] as usize == y),
+                "symbol {s}'s ψ is not a bijection"
+            );
         }
         Ok(ArtTables {
             grammar,
@@ -138,11 +148,11 @@ pub struct ArtOwen {
     psi_inv: Vec<u8>,
     /// Digits per step (4 bits of input for q ≤ 4, one digit otherwise).
     step_digits: u32,
-    /// Step table, split by field so the serial symbol chain reads only the compact `next`
-    /// array: index s·2^(q·step_digits) + v.
-    step_next: Vec<u32>,
-    /// Each step's [`Step::contribution`], at the same index.
-    step_contribution: Vec<u64>,
+    /// The scalar path's step tables, built once enough words have gone through the
+    /// digit-by-digit loop to pay for them ([`STEP_TABLES_AFTER_WORDS`]).
+    steps: std::sync::OnceLock<steps::StepTables>,
+    /// Words scrambled so far (until the step tables exist).
+    step_words: batch::WordsSeen,
     /// Digits per step of the batch path's table (up to 8 bits per step while the table stays
     /// within [`batch::BATCH_TABLE_BYTES`]); 0 when the alphabet has more than 2^16 symbols
     /// and there is no batch table.
@@ -177,8 +187,8 @@ impl ArtOwen {
         ))
     }
 
-    /// The scrambler built from `tables` (drawn from `seed`): derives the step, batch and
-    /// narrow tables and caches the first dimensions' keys.
+    /// The scrambler built from `tables` (drawn from `seed`): caches the first dimensions'
+    /// keys; the step, batch and narrow tables are derived when enough words need them.
     pub(crate) fn from_tables(variant: ArtVariant, seed: u64, tables: ArtTables) -> Self {
         let ArtTables {
             grammar,
@@ -195,8 +205,8 @@ impl ArtOwen {
             psi,
             psi_inv,
             step_digits: (4 / variant.q()).max(1),
-            step_next: Vec::new(),
-            step_contribution: Vec::new(),
+            steps: std::sync::OnceLock::new(),
+            step_words: batch::WordsSeen::default(),
             batch_digits: 0,
             batch: std::sync::OnceLock::new(),
             batch_words: batch::WordsSeen::default(),
@@ -205,68 +215,10 @@ impl ArtOwen {
             dimension_rule,
         };
         art.dims = (0..CACHED_ROOTS).map(|d| art.hashed_dim(d)).collect();
-        if art.step_digits == 1 {
-            art.build_single_digit_steps();
-        } else {
-            let steps = art.build_steps(art.step_digits);
-            let step_bits = art.step_digits * variant.q();
-            art.step_next = steps.iter().map(|e| e.next).collect();
-            art.step_contribution = steps.iter().map(|e| e.contribution(step_bits)).collect();
-        }
         if art.grammar.symbols() <= 1 << 16 {
             art.batch_digits = batch::batch_digits(variant.q(), art.grammar.symbols());
         }
         art
-    }
-
-    /// The step table: for every symbol and every value v of `step_digits` input digits, the
-    /// loop's effect with ancestors' translations left out (they are XOR-ed in at run time).
-    fn build_steps(&self, m: u32) -> Vec<Step> {
-        let q = self.q();
-        let bits = q * m;
-        let mut out = Vec::with_capacity((self.grammar.symbols() as usize) << bits);
-        for s0 in 0..self.grammar.symbols() {
-            for v in 0..1u32 << bits {
-                let (mut s, mut g, mut local) = (s0, 0u64, 0u32);
-                for i in 0..m {
-                    let d = (v >> (bits - q * (i + 1))) & ((1 << q) - 1);
-                    g ^= self.codes[s as usize] >> (q * i);
-                    let f = ((g >> (64 - q * (i + 1))) & ((1 << q) - 1)) as u32;
-                    local = (local << q) | (self.psi_apply(s, d) ^ f);
-                    s = self.child(s, d);
-                }
-                out.push(Step {
-                    carry: g,
-                    next: s,
-                    local,
-                });
-            }
-        }
-        out
-    }
-
-    /// The split step tables for steps of one digit (q ≥ 5), written directly: the entry of
-    /// (s, d) is [`ArtOwen::build_steps`]'s for m = 1 — carry T[s], next child(s, d), local
-    /// ψ_s(d) ⊕ T[s]'s top digit — without the intermediate list (for 256 symbols in base
-    /// 256 the tables have 65,536 entries and dominated an instance's construction).
-    fn build_single_digit_steps(&mut self) {
-        let q = self.q();
-        let n = (self.grammar.symbols() as usize) << q;
-        let (mut next, mut contribution) = (Vec::with_capacity(n), Vec::with_capacity(n));
-        for s in 0..self.grammar.symbols() {
-            let code = self.codes[s as usize];
-            let top = (code >> (64 - q)) as u32;
-            for d in 0..1u32 << q {
-                next.push(self.child(s, d));
-                let step = Step {
-                    carry: code,
-                    next: 0,
-                    local: self.psi_apply(s, d) ^ top,
-                };
-                contribution.push(step.contribution(q));
-            }
-        }
-        (self.step_next, self.step_contribution) = (next, contribution);
     }
 
     /// The variant.
@@ -351,6 +303,9 @@ impl ArtOwen {
     /// digit-by-digit loop (tested).
     #[inline]
     fn forward_fast(&self, x: u64, width: Width, root: u32) -> u64 {
+        let Some(tables) = self.step_tables_for(1) else {
+            return self.finish_digits(x, width, 0, root, 0, 0);
+        };
         let q = self.q();
         let w = width.bits();
         let step_bits = q * self.step_digits;
@@ -361,10 +316,10 @@ impl ArtOwen {
         for i in 0..steps {
             let v = (x >> (w - step_bits * (i + 1))) & mask;
             let idx = ((s as usize) << step_bits) | v as usize;
-            let t = g ^ self.step_contribution[idx];
+            let t = g ^ tables.contribution[idx];
             out = (out << step_bits) | (t >> (64 - step_bits));
             g = t << step_bits;
-            s = self.step_next[idx];
+            s = tables.next[idx];
         }
         self.finish_digits(x, width, steps * step_bits, s, g, out)
     }
@@ -591,14 +546,13 @@ impl Scrambler for ArtOwen {
 
     /// Everything held once the batch path is warm, in bytes: child table, codes, ψ and ψ^{-1}
     /// images, the scalar step tables, the batch table and the narrow table with the codes'
-    /// top halves (the batch tables are built here if they were not yet).
+    /// top halves (the step and batch tables are built here if they were not yet).
     fn table_bytes(&self) -> usize {
         self.grammar.table_bytes()
             + self.codes.len() * 8
             + self.psi.len()
             + self.psi_inv.len()
-            + self.step_next.len() * 4
-            + self.step_contribution.len() * 8
+            + self.step_tables().bytes()
             + self.batch_tables().map_or(0, batch::BatchTables::bytes)
     }
 
