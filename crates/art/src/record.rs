@@ -256,10 +256,9 @@ impl ArtRecord {
             PsiLayout::Matrix => {
                 let q = self.variant.q();
                 let m = self.psi_field(s);
-                let rows: Vec<u8> = (0..q)
-                    .map(|i| ((m >> (q * i)) & ((1 << q) - 1)) as u8)
-                    .collect();
-                Some(Gf2Matrix::from_rows(q, &rows).expect("q ≤ 8 rows of q bits"))
+                let rows: [u8; 8] =
+                    std::array::from_fn(|i| ((m >> (q * i as u32)) & ((1 << q) - 1)) as u8);
+                Some(Gf2Matrix::from_rows(q, &rows[..q as usize]).expect("q ≤ 8 rows of q bits"))
             }
             _ => None,
         }
@@ -267,42 +266,23 @@ impl ArtRecord {
 
     /// Symbol `s`'s ψ as a permutation, or `None` where ψ is the identity for every symbol.
     pub fn psi(&self, s: u32) -> Option<Permutation> {
-        if self.layout == PsiLayout::Identity {
-            return None;
-        }
-        let images: Vec<u8> = match self.psi_matrix(s) {
-            // Linear ψ: its images by linearity, the same values psi_apply decodes (tested).
-            Some(m) => m.images(),
-            None => (0..1u32 << self.variant.q())
-                .map(|d| self.psi_apply(s, d) as u8)
-                .collect(),
-        };
-        Some(Permutation::from_images(&images).expect("a record's ψ is a bijection"))
+        let mut images = Vec::new();
+        self.psi_images_into(s, &mut images)
+            .then(|| Permutation::from_images(&images).expect("a record's ψ is a bijection"))
     }
 
-    /// Appends symbol `s`'s ψ images (ψ(0), …, ψ(2^q − 1)) to `out`, the values
-    /// [`ArtRecord::psi`] holds, without building the permutation; false (nothing appended)
-    /// where ψ is the identity for every symbol. An instance of the engine reads its ψ table
-    /// this way: a permutation per symbol was a fifth of its construction.
+    /// Appends symbol `s`'s ψ images (ψ(0), …, ψ(2^q − 1)) to `out` without building the
+    /// permutation; false (nothing appended) where ψ is the identity for every symbol. An
+    /// instance of the engine reads its ψ table this way: a permutation per symbol was a fifth
+    /// of its construction.
     pub fn psi_images_into(&self, s: u32, out: &mut Vec<u8>) -> bool {
-        let q = self.variant.q();
-        match self.layout {
-            PsiLayout::Identity => return false,
-            PsiLayout::Matrix => {
-                // By linearity: the image of x is the image of x without its lowest set bit,
-                // XOR the image of that bit (column j is row parities with bit j).
-                let m = self.psi_field(s);
-                let columns: [u8; 8] = std::array::from_fn(|j| {
-                    (0..q).fold(0u8, |y, i| y | ((((m >> (q * i)) >> j) & 1) as u8) << i)
-                });
-                let start = out.len();
-                out.push(0);
-                for x in 1usize..1 << q {
-                    let below = out[start + (x & (x - 1))];
-                    out.push(below ^ columns[x.trailing_zeros() as usize]);
-                }
-            }
-            _ => out.extend((0..1u32 << q).map(|d| self.psi_apply(s, d) as u8)),
+        if self.layout == PsiLayout::Identity {
+            return false;
+        }
+        match self.psi_matrix(s) {
+            // Linear ψ: its images by linearity, the same values psi_apply decodes (tested).
+            Some(m) => m.images_into(out),
+            None => out.extend((0..1u32 << self.variant.q()).map(|d| self.psi_apply(s, d) as u8)),
         }
         true
     }

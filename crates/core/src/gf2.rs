@@ -93,13 +93,21 @@ impl Gf2Matrix {
     /// A·x for every q-bit x, indexed by x: built by linearity (A·x = A·(x with its lowest
     /// set bit cleared) ⊕ column of that bit), one XOR per entry instead of q parities.
     pub fn images(&self) -> Vec<u8> {
-        let columns: Vec<u8> = (0..self.q).map(|j| self.apply(1 << j) as u8).collect();
-        let n = 1usize << self.q;
-        let mut out = vec![0u8; n];
-        for x in 1..n {
-            out[x] = out[x & (x - 1)] ^ columns[x.trailing_zeros() as usize];
-        }
+        let mut out = Vec::with_capacity(1 << self.q);
+        self.images_into(&mut out);
         out
+    }
+
+    /// [`Gf2Matrix::images`] appended to `out` (no allocation when `out` has room: a table of
+    /// many matrices is filled in place).
+    pub fn images_into(&self, out: &mut Vec<u8>) {
+        let columns: [u8; 8] = std::array::from_fn(|j| self.apply(1 << j) as u8);
+        let start = out.len();
+        out.push(0);
+        for x in 1..1usize << self.q {
+            let below = out[start + (x & (x - 1))];
+            out.push(below ^ columns[x.trailing_zeros() as usize]);
+        }
     }
 
     /// The product A·B (apply B first). Panics on different sizes.
