@@ -3,6 +3,52 @@
 //! E P(f) = 1 at every f ≠ 0, so values well below 1 near the origin are the blue-noise-like
 //! gap that nets show.
 
+/// The phases e^{−2πi k x} of one coordinate of a point set at the frequencies k = −F..=F,
+/// point-major: entry `j * (2F + 1) + (k + F)` is point j at frequency k. Computed once per
+/// coordinate, they serve every pair that coordinate is part of.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Phases {
+    re: Vec<f64>,
+    im: Vec<f64>,
+    max_freq: usize,
+}
+
+impl Phases {
+    /// The phases of `coords` (one coordinate of each point, in [0, 1)) for |k| ≤ `max_freq`.
+    /// The negative frequencies are the conjugates of the positive ones, as e^{2πi k x} is.
+    pub fn new(coords: impl IntoIterator<Item = f64>, max_freq: usize) -> Self {
+        let f = max_freq;
+        let side = 2 * f + 1;
+        let coords = coords.into_iter();
+        let (mut re, mut im) = (
+            Vec::with_capacity(coords.size_hint().0 * side),
+            Vec::with_capacity(coords.size_hint().0 * side),
+        );
+        let (mut cos, mut sin) = (vec![0.0; f + 1], vec![0.0; f + 1]);
+        for x in coords {
+            for k in 0..=f {
+                let a = -2.0 * std::f64::consts::PI * k as f64 * x;
+                (sin[k], cos[k]) = a.sin_cos();
+            }
+            re.extend(cos[1..].iter().rev());
+            im.extend(sin[1..].iter().rev().map(|v| -v));
+            re.extend(&cos);
+            im.extend(&sin);
+        }
+        Phases { re, im, max_freq }
+    }
+
+    /// The number of points.
+    pub fn len(&self) -> usize {
+        self.re.len() / (2 * self.max_freq + 1)
+    }
+
+    /// Whether there are no points.
+    pub fn is_empty(&self) -> bool {
+        self.re.is_empty()
+    }
+}
+
 /// The spectrum on the (2F+1)² grid, row-major with f₁ (second coordinate) as the row:
 /// entry `(f1 + F) * (2F + 1) + (f0 + F)`.
 ///
@@ -12,48 +58,52 @@
 /// assert!((p[4] - 2.0).abs() < 1e-12); // P(0) = N
 /// ```
 pub fn power_spectrum(points: &[[f64; 2]], max_freq: usize) -> Vec<f64> {
-    let f = max_freq as i64;
-    let side = (2 * f + 1) as usize;
-    // Separable phases e^{−2πi k x} per point and frequency, point-major: row j holds the
-    // `side` frequencies of point j (real and imaginary parts apart).
-    let phases = |coord: usize| -> (Vec<f64>, Vec<f64>) {
-        let (mut re, mut im) = (
-            Vec::with_capacity(points.len() * side),
-            Vec::with_capacity(points.len() * side),
-        );
-        for p in points {
-            for k in -f..=f {
-                let a = -2.0 * std::f64::consts::PI * k as f64 * p[coord];
-                re.push(a.cos());
-                im.push(a.sin());
-            }
-        }
-        (re, im)
-    };
-    let ((c0, s0), (c1, s1)) = (phases(0), phases(1));
-    let n = points.len() as f64;
+    pair_spectrum(
+        &Phases::new(points.iter().map(|p| p[0]), max_freq),
+        &Phases::new(points.iter().map(|p| p[1]), max_freq),
+    )
+}
+
+/// The spectrum of the points whose coordinates have the phases `x` (f₀, the columns) and
+/// `y` (f₁, the rows), on the grid of [`power_spectrum`].
+///
+/// # Panics
+/// When `x` and `y` differ in their number of points or frequencies.
+pub fn pair_spectrum(x: &Phases, y: &Phases) -> Vec<f64> {
+    assert_eq!(
+        x.max_freq, y.max_freq,
+        "phases of different frequency grids"
+    );
+    assert_eq!(x.len(), y.len(), "phases of different point sets");
+    let f = x.max_freq;
+    let side = 2 * f + 1;
+    let n = x.len() as f64;
     let mut out = vec![0.0; side * side];
-    // For each row f₁, every column's sum runs over the points in order (the same bits as a
-    // sum per entry); the columns advance together, so the inner loop is contiguous.
+    // For each row f₁ ≥ 0, every column's sum runs over the points in order (the same bits as
+    // a sum per entry); the columns advance together, so the inner loop is contiguous. The rows
+    // f₁ < 0 are the mirror images P(−f) = P(f): with conjugate phases every product and sum
+    // is the exact negation of its mirror's, so the mirror is the same bits.
     let (mut re, mut im) = (vec![0.0; side], vec![0.0; side]);
-    for r in 0..side {
+    for r in f..side {
         re.iter_mut().for_each(|v| *v = 0.0);
         im.iter_mut().for_each(|v| *v = 0.0);
-        for j in 0..points.len() {
-            let (b0, b1) = (c1[j * side + r], s1[j * side + r]);
+        for j in 0..x.len() {
+            let (b0, b1) = (y.re[j * side + r], y.im[j * side + r]);
             let row = j * side..(j + 1) * side;
             for (((re, im), &a0), &a1) in re
                 .iter_mut()
                 .zip(im.iter_mut())
-                .zip(&c0[row.clone()])
-                .zip(&s0[row])
+                .zip(&x.re[row.clone()])
+                .zip(&x.im[row])
             {
                 *re += a0 * b0 - a1 * b1;
                 *im += a0 * b1 + a1 * b0;
             }
         }
         for c in 0..side {
-            out[r * side + c] = (re[c] * re[c] + im[c] * im[c]) / n;
+            let p = (re[c] * re[c] + im[c] * im[c]) / n;
+            out[r * side + c] = p;
+            out[(side - 1 - r) * side + (side - 1 - c)] = p;
         }
     }
     out
@@ -91,22 +141,71 @@ pub fn radial_average(spectrum: &[f64], max_freq: usize) -> Vec<f64> {
 /// assert!(m.iter().zip(pa.iter().zip(&pb)).all(|(m, (x, y))| (m - (x + y) / 2.0).abs() < 1e-12));
 /// ```
 pub fn mean_power_spectrum(sets: &[Vec<[f64; 2]>], max_freq: usize) -> Vec<f64> {
+    if sets.is_empty() {
+        let side = 2 * max_freq + 1;
+        return vec![0.0; side * side];
+    }
+    let columns: Vec<Vec<Vec<f64>>> = sets
+        .iter()
+        .map(|s| (0..2).map(|d| s.iter().map(|p| p[d]).collect()).collect())
+        .collect();
+    mean_pair_spectra(&columns, max_freq)
+        .swap_remove(0)
+        .swap_remove(1)
+}
+
+/// The mean periodogram of every pair of coordinates (a, b), a < b, over several point sets:
+/// `sets[s][d]` is coordinate d of set s's points, every set with the same number of
+/// coordinates. Entry `[a][b]` is the mean over the sets of [`pair_spectrum`] of coordinates a
+/// (columns) and b (rows), the same bits as [`mean_power_spectrum`] of those pairs; entries
+/// with a ≥ b are empty. Each coordinate's phases are computed once per set.
+///
+/// ```
+/// use gartowen_bench::spectrum::{mean_pair_spectra, mean_power_spectrum};
+/// let sets = vec![vec![vec![0.1, 0.7], vec![0.2, 0.4], vec![0.9, 0.3]]];
+/// let all = mean_pair_spectra(&sets, 2);
+/// let pair_0_2 = mean_power_spectrum(&[vec![[0.1, 0.9], [0.7, 0.3]]], 2);
+/// assert_eq!(all[0][2], pair_0_2);
+/// assert!(all[2][0].is_empty());
+/// ```
+///
+/// # Panics
+/// When the sets differ in their number of coordinates or points.
+pub fn mean_pair_spectra(sets: &[Vec<Vec<f64>>], max_freq: usize) -> Vec<Vec<Vec<f64>>> {
     use rayon::prelude::*;
     let side = 2 * max_freq + 1;
-    let spectra: Vec<Vec<f64>> = sets
-        .par_iter()
-        .map(|s| power_spectrum(s, max_freq))
+    let dims = sets.first().map_or(0, Vec::len);
+    assert!(
+        sets.iter().all(|s| s.len() == dims),
+        "point sets with different numbers of coordinates"
+    );
+    let pairs: Vec<(usize, usize)> = (0..dims)
+        .flat_map(|a| (a + 1..dims).map(move |b| (a, b)))
         .collect();
-    // Summed in set order: the same bits for any thread count.
-    let mut sum = vec![0.0; side * side];
-    for spectrum in &spectra {
-        for (acc, v) in sum.iter_mut().zip(spectrum) {
-            *acc += v;
+    let mut sums = vec![vec![0.0; side * side]; pairs.len()];
+    for set in sets {
+        let phases: Vec<Phases> = set
+            .par_iter()
+            .map(|c| Phases::new(c.iter().copied(), max_freq))
+            .collect();
+        let spectra: Vec<Vec<f64>> = pairs
+            .par_iter()
+            .map(|&(a, b)| pair_spectrum(&phases[a], &phases[b]))
+            .collect();
+        // Summed in set order: the same bits for any thread count.
+        for (sum, spectrum) in sums.iter_mut().zip(&spectra) {
+            for (acc, v) in sum.iter_mut().zip(spectrum) {
+                *acc += v;
+            }
         }
     }
     let k = sets.len().max(1) as f64;
-    sum.iter_mut().for_each(|v| *v /= k);
-    sum
+    let mut out = vec![vec![Vec::new(); dims]; dims];
+    for ((a, b), mut sum) in pairs.into_iter().zip(sums) {
+        sum.iter_mut().for_each(|v| *v /= k);
+        out[a][b] = sum;
+    }
+    out
 }
 
 #[cfg(test)]
@@ -166,6 +265,68 @@ mod tests {
             }
         }
         assert!((p[6 * side + 6] - 100.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn every_pair_of_the_shared_phases_is_the_spectrum_of_that_pair_alone() {
+        // Four coordinates of three sets of 50 points: each pair's mean from the phases
+        // computed once per coordinate has the bits of the mean over the 2-D point sets.
+        let mut rng = SplitMix64::new(11);
+        let sets: Vec<Vec<Vec<f64>>> = (0..3)
+            .map(|_| {
+                (0..4)
+                    .map(|_| (0..50).map(|_| rng.next_f64()).collect())
+                    .collect()
+            })
+            .collect();
+        let all = mean_pair_spectra(&sets, 4);
+        for a in 0..4 {
+            for b in 0..4 {
+                if a >= b {
+                    assert!(all[a][b].is_empty());
+                    continue;
+                }
+                let pairs: Vec<Vec<[f64; 2]>> = sets
+                    .iter()
+                    .map(|s| s[a].iter().zip(&s[b]).map(|(x, y)| [*x, *y]).collect())
+                    .collect();
+                let want = mean_power_spectrum(&pairs, 4);
+                // And against the definition, one set at a time.
+                let direct_mean =
+                    |f0: i64, f1: i64| pairs.iter().map(|p| direct(p, f0, f1)).sum::<f64>() / 3.0;
+                assert_eq!(all[a][b], want, "pair ({a}, {b})");
+                for r in 0..9 {
+                    for c in 0..9 {
+                        let d = direct_mean(c as i64 - 4, r as i64 - 4);
+                        assert!((want[r * 9 + c] - d).abs() < 1e-9 * d.max(1.0));
+                    }
+                }
+            }
+        }
+        assert_eq!(mean_power_spectrum(&[], 3), vec![0.0; 49]);
+    }
+
+    #[test]
+    fn negative_frequencies_are_the_conjugates_and_the_mirror_is_exact() {
+        let mut rng = SplitMix64::new(3);
+        let xs: Vec<f64> = (0..20).map(|_| rng.next_f64()).collect();
+        let ph = Phases::new(xs.iter().copied(), 5);
+        assert_eq!(ph.len(), 20);
+        for (j, x) in xs.iter().enumerate() {
+            for k in -5i64..=5 {
+                let at = j * 11 + (k + 5) as usize;
+                let a = -2.0 * std::f64::consts::PI * k as f64 * x;
+                assert!((ph.re[at] - a.cos()).abs() < 1e-15 && (ph.im[at] - a.sin()).abs() < 1e-15);
+                let mirror = j * 11 + (5 - k) as usize;
+                assert_eq!(ph.re[at], ph.re[mirror]);
+                assert_eq!(ph.im[at], -ph.im[mirror]);
+            }
+        }
+        let ys: Vec<f64> = (0..20).map(|_| rng.next_f64()).collect();
+        let p = pair_spectrum(&ph, &Phases::new(ys, 5));
+        for (i, v) in p.iter().enumerate() {
+            assert_eq!(v.to_bits(), p[120 - i].to_bits());
+        }
     }
 
     #[test]

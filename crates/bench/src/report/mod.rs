@@ -26,7 +26,7 @@ use crate::figures::{
 };
 use crate::harness::{methods_for, run_method, HarnessConfig, HarnessError, Method, MethodResult};
 use crate::integrands::{standard_families, Family, Smoothness};
-use crate::spectrum::mean_power_spectrum;
+use crate::spectrum::mean_pair_spectra;
 pub use crate::speed::{measure_speed, SpeedRow};
 use gartowen::core::Registry;
 use gartowen::discrepancy::expected::expected_l2star_random;

@@ -124,19 +124,19 @@ pub fn write_figures(
                     .collect()
             };
             // Every pair's mean spectrum once: the matrix and the consecutive pairs share them.
-            let spectra: Vec<Vec<Vec<f64>>> = (0..8)
-                .map(|a| {
+            let columns: Vec<Vec<Vec<f64>>> = sets
+                .iter()
+                .map(|w| {
                     (0..8)
-                        .map(|b| {
-                            if a < b {
-                                mean_power_spectrum(&pair_sets(a, b), 24)
-                            } else {
-                                Vec::new()
-                            }
+                        .map(|j| {
+                            (0..n)
+                                .map(|i| w[i * 8 + j] as f64 * 2f64.powi(-32))
+                                .collect()
                         })
                         .collect()
                 })
                 .collect();
+            let spectra = mean_pair_spectra(&columns, 24);
             let name = format!("figure1_sz16_n{n}_pairs_{}.png", file_stem(request));
             pair_matrix(
                 &dir.join(&name),
