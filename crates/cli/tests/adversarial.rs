@@ -183,19 +183,75 @@ fn strings(v: &Value) -> Vec<String> {
         .unwrap_or_default()
 }
 
-/// Runs one case; the reasons it failed, if any.
-fn run_case(case: &Value) -> Vec<String> {
-    let dir = tempfile::tempdir().unwrap();
-    let d = dir.path();
-    if let Some(files) = case["files"].as_object() {
-        for (name, spec) in files {
-            make_file(d, name, spec);
+/// The folders that cases' setups left, by the case's files and setup commands: many cases
+/// edit the same certificates, and the commands are deterministic, so each distinct setup runs
+/// once and later cases start from a copy of its files.
+type SetupCache = std::sync::Mutex<std::collections::HashMap<String, Vec<CachedFile>>>;
+
+/// A file of a cached setup: its path in the case's folder, bytes and permission bits.
+type CachedFile = (PathBuf, Vec<u8>, u32);
+
+/// Every regular file under `dir` (relative path, bytes, mode); `None` when the folder holds
+/// anything else (a link, a special file), which a copy would not reproduce.
+fn regular_files(dir: &Path) -> Option<Vec<CachedFile>> {
+    use std::os::unix::fs::PermissionsExt;
+    let mut found = Vec::new();
+    let mut todo = vec![dir.to_path_buf()];
+    while let Some(d) = todo.pop() {
+        for e in std::fs::read_dir(&d).ok()?.flatten() {
+            let t = e.file_type().ok()?;
+            if t.is_dir() {
+                todo.push(e.path());
+            } else if t.is_file() {
+                let rel = e.path().strip_prefix(dir).ok()?.to_path_buf();
+                let mode = e.metadata().ok()?.permissions().mode();
+                found.push((rel, std::fs::read(e.path()).ok()?, mode));
+            } else {
+                return None;
+            }
         }
     }
-    for step in case["setup"].as_array().into_iter().flatten() {
-        let o = run_capped(d, &strings(step), None);
-        if o.code != Some(0) {
-            return vec![format!("setup {step} exited {:?}: {}", o.code, o.stderr)];
+    Some(found)
+}
+
+/// Runs one case; the reasons it failed, if any.
+fn run_case(case: &Value) -> Vec<String> {
+    run_case_with(case, &SetupCache::default())
+}
+
+/// [`run_case`], starting from the cached result of an identical setup where there is one.
+fn run_case_with(case: &Value, cache: &SetupCache) -> Vec<String> {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let setup = case["setup"].as_array().filter(|s| !s.is_empty());
+    let key = setup.map(|s| format!("{}|{}", case["files"], Value::Array(s.clone())));
+    let cached = key
+        .as_ref()
+        .and_then(|k| cache.lock().unwrap().get(k).cloned());
+    if let Some(files) = cached {
+        use std::os::unix::fs::PermissionsExt;
+        for (rel, bytes, mode) in files {
+            let path = d.join(rel);
+            if let Some(parent) = path.parent() {
+                std::fs::create_dir_all(parent).unwrap();
+            }
+            std::fs::write(&path, bytes).unwrap();
+            std::fs::set_permissions(&path, std::fs::Permissions::from_mode(mode)).unwrap();
+        }
+    } else {
+        if let Some(files) = case["files"].as_object() {
+            for (name, spec) in files {
+                make_file(d, name, spec);
+            }
+        }
+        for step in setup.into_iter().flatten() {
+            let o = run_capped(d, &strings(step), None);
+            if o.code != Some(0) {
+                return vec![format!("setup {step} exited {:?}: {}", o.code, o.stderr)];
+            }
+        }
+        if let (Some(key), Some(files)) = (key, regular_files(d)) {
+            cache.lock().unwrap().insert(key, files);
         }
     }
     for edit in case["edit"].as_array().into_iter().flatten() {
@@ -255,6 +311,7 @@ fn every_adversarial_case_exits_as_stated_under_a_memory_cap() {
     // Two runners take cases in turn: a third of the corpus waits on a deadline (a hung or
     // silent program), so the cases overlap well on two cores. The failures keep corpus order.
     let next = std::sync::atomic::AtomicUsize::new(0);
+    let cache = SetupCache::default();
     let mut found: Vec<(usize, String)> = std::thread::scope(|s| {
         let runners: Vec<_> = (0..2)
             .map(|_| {
@@ -265,7 +322,7 @@ fn every_adversarial_case_exits_as_stated_under_a_memory_cap() {
                         let Some(case) = cases.get(i) else { break mine };
                         let name = case["name"].as_str().unwrap();
                         mine.extend(
-                            run_case(case)
+                            run_case_with(case, &cache)
                                 .into_iter()
                                 .map(|why| (i, format!("{name}: {why}"))),
                         );
