@@ -17,6 +17,7 @@ mod non_dyadic;
 mod owen_variance;
 mod owned_check;
 mod prerequisites;
+mod proof_reuse;
 mod radix_battery;
 mod randomization_quality;
 mod request_table;
