@@ -22,13 +22,14 @@
 //! operation returns it exactly; the remaining factor errors are the proved ones below.
 
 use crate::dd::Dd;
+use crate::unreduced::Unreduced;
 use crate::{Kind, Points};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 
 /// How the compensated sum is organized: what the depths and term counts of the proof are.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) struct Layout {
     /// Points N.
     pub n: usize,
@@ -190,47 +191,95 @@ pub(crate) fn sum_bounds(kind: Kind, l: Layout) -> Option<(BigRational, BigRatio
     (eps1 <= half && eps2 <= half).then_some((eps1, eps2))
 }
 
+/// What [`combine`] needs of one (kind, layout) besides the sums: c0, c1 and the factors
+/// ε/(1 − ε) of `to_computed` for S1 and S2 (None where [`sum_bounds`] is None). A pure
+/// function of its key, computed in exact rationals.
+#[derive(Debug)]
+pub(crate) struct LayoutConstants {
+    c0: BigRational,
+    c1: BigRational,
+    to_computed: Option<(BigRational, BigRational)>,
+}
+
+/// Layouts whose constants are kept: replicate runs (a mean D² over seeds) ask for one layout
+/// thousands of times, and the rationals of its bound cost more than the sums at small N.
+const KNOWN_LAYOUTS: usize = 64;
+
+/// [`LayoutConstants`] of `(kind, l)`, computed once and kept (at most [`KNOWN_LAYOUTS`]; when
+/// full, the oldest is dropped). The values do not depend on what is kept, so results are
+/// bit-identical either way.
+pub(crate) fn layout_constants(kind: Kind, l: Layout) -> std::sync::Arc<LayoutConstants> {
+    use std::sync::{Arc, Mutex};
+    type Known = Vec<((Kind, Layout), Arc<LayoutConstants>)>;
+    static KNOWN: Mutex<Known> = Mutex::new(Vec::new());
+    let key = (kind, l);
+    let lock = || KNOWN.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some((_, c)) = lock().iter().find(|(k, _)| *k == key) {
+        return c.clone();
+    }
+    let one = BigRational::one();
+    let factor = |eps: BigRational| &eps / (&one - &eps);
+    let computed = Arc::new(LayoutConstants {
+        c0: crate::rational::c0(kind, l.d),
+        c1: crate::rational::c1(kind, l.d),
+        to_computed: (l.n > 0 && l.d > 0)
+            .then(|| sum_bounds(kind, l))
+            .flatten()
+            .map(|(e1, e2)| (factor(e1), factor(e2))),
+    });
+    let mut known = lock();
+    if known.len() >= KNOWN_LAYOUTS {
+        known.remove(0);
+    }
+    known.push((key, computed.clone()));
+    computed
+}
+
 /// D² combined exactly from the computed sums, and its proved relative error bound
-/// (`combine_error`), rounded up to f64; the bound is None when E ≥ |Vq|.
+/// (`combine_error`), rounded up to f64; the bound is None when E ≥ |Vq|, or when
+/// `bounded` is false (the run-time hypotheses do not hold) or the layout has no ε.
 pub(crate) fn combine(
     kind: Kind,
+    constants: &LayoutConstants,
+    bounded: bool,
     n: usize,
     d: usize,
     s1: Dd,
     s2: Dd,
-    eps: Option<(BigRational, BigRational)>,
 ) -> (f64, Option<f64>) {
     if n == 0 {
         return (f64::NAN, None); // D² of no points is undefined (0/0)
     }
-    let (c0, c1) = (crate::rational::c0(kind, d), crate::rational::c1(kind, d));
+    let (c0, c1) = (&constants.c0, &constants.c1);
     if ![s1.hi, s1.lo, s2.hi, s2.lo].iter().all(|x| x.is_finite()) {
         // The sums overflowed (outside the hypotheses): the f64 combination, no bound.
         let nf = n as f64;
-        let value = crate::rational::to_f64(&c0) + kind.c1(d) * s1.hi / nf + s2.hi / nf / nf;
+        let value = crate::rational::to_f64(c0) + kind.c1(d) * s1.hi / nf + s2.hi / nf / nf;
         return (value, None);
     }
-    let nn = int(n);
-    let s1q = q(s1.hi) + q(s1.lo);
-    let s2q = q(s2.hi) + q(s2.lo);
-    let vq = &c0 + &c1 * &s1q / &nn + &s2q / (&nn * &nn);
-    let value = crate::rational::to_f64(&vq);
-    let Some((eps1, eps2)) = eps else {
+    // Exact, without a gcd per step (the values are those of the reduced rationals).
+    let (nn, n2) = (Unreduced::int(n), Unreduced::int(n).mul(&Unreduced::int(n)));
+    let dyadic = |x: f64| Unreduced::of(&q(x));
+    let s1q = dyadic(s1.hi).add(&dyadic(s1.lo));
+    let s2q = dyadic(s2.hi).add(&dyadic(s2.lo));
+    let (c0, c1) = (Unreduced::of(c0), Unreduced::of(c1));
+    let vq = c0.add(&c1.mul(&s1q).div(&nn)).add(&s2q.div(&n2));
+    let value = crate::rational::to_f64(&vq.to_ratio());
+    let Some((k1, k2)) = constants.to_computed.as_ref().filter(|_| bounded) else {
         return (value, None);
     };
     if !value.is_finite() {
         return (value, None);
     }
-    let one = BigRational::one();
     // to_computed: |Ŝ − S| ≤ ε/(1 − ε)·Ŝ.
-    let e1 = &eps1 / (&one - &eps1) * s1q.abs();
-    let e2 = &eps2 / (&one - &eps2) * s2q.abs();
-    let e = c1.abs() * e1 / &nn + e2 / (&nn * &nn);
+    let e1 = Unreduced::of(k1).mul(&s1q.abs());
+    let e2 = Unreduced::of(k2).mul(&s2q.abs());
+    let e = c1.abs().mul(&e1).div(&nn).add(&e2.div(&n2));
     if e >= vq.abs() {
         return (value, None);
     }
-    let rel = ((q(value) - &vq).abs() + &e) / (vq.abs() - &e);
-    (value, Some(round_up(&rel)))
+    let rel = dyadic(value).sub(&vq).abs().add(&e).div(&vq.abs().sub(&e));
+    (value, Some(round_up(&rel.to_ratio())))
 }
 
 /// The smallest f64 at or above the non-negative rational `r`.

@@ -215,12 +215,9 @@ pub fn compensated(points: Points, kind: Kind) -> Discrepancy {
         rows_per_chunk: ROWS_PER_CHUNK,
         block: BLOCK,
     };
-    let eps = if n > 0 && bound::hypotheses_hold(points, kind) {
-        bound::sum_bounds(kind, layout)
-    } else {
-        None
-    };
-    let (value, rel_error_bound) = bound::combine(kind, n, d, s1, s2, eps);
+    let bounded = n > 0 && bound::hypotheses_hold(points, kind);
+    let constants = bound::layout_constants(kind, layout);
+    let (value, rel_error_bound) = bound::combine(kind, &constants, bounded, n, d, s1, s2);
     Discrepancy {
         kind,
         method: Method::Compensated,

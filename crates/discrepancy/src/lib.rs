@@ -25,6 +25,7 @@ pub mod kinds;
 mod limbs;
 pub mod naive;
 pub mod rational;
+mod unreduced;
 
 pub use kinds::Kind;
 
