@@ -82,7 +82,13 @@ fn two_shards_of_a_dimension_merge_into_a_certificate_of_every_32_bit_word() {
     assert_eq!(imp["implementation"], "lk-hash");
     assert_eq!(imp["dims"][0]["words"], 4_294_967_296u64);
     assert_eq!(imp["dims"][0]["dim"], 2);
-    assert_eq!(imp["dims"][0]["node_laws"].as_array().unwrap().len(), 22);
+    // The law of each depth k, tallied over all 2^k nodes of the depth.
+    let laws = imp["dims"][0]["node_laws"].as_array().unwrap();
+    assert_eq!(laws.len(), 22);
+    for (k, law) in laws.iter().enumerate() {
+        assert_eq!(law["depth"], k as u64, "{law}");
+        assert_eq!(law["nodes"], 1u64 << k, "{law}");
+    }
     // A shard alone certifies nothing beyond its pieces.
     let one: serde_json::Value = serde_json::from_slice(&std::fs::read(&a).unwrap()).unwrap();
     assert!(one["result"]["implementations"]
