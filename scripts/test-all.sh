@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # Runs every test of gartowen: unit, property, integration, CLI end-to-end, doctests and the
-# exhaustive 2^32-word float test (all in the test profile, opt-level 2), the Python package's
-# pytest suite, then the Coq proofs when proofs/ has theories. Exits non-zero when any part
-# fails.
+# exhaustive 2^32-word float test (in the test profile: the libraries at opt-level 2), the
+# Python package's pytest suite, then the Coq proofs when proofs/ has theories. Exits non-zero
+# when any part fails.
 #
-# On 2 cores the parts overlap where they leave a core idle: PyPI's downloads for the Python
-# package run while cargo compiles, and the proofs (coqc, one core, on a copy of the sources in
-# a temporary folder, apart from the theories proofs/extract.sh builds for the Rust tests) run
-# beside the Python package's build and pytest (one core).
+# On 2 cores the parts overlap where they would leave a core idle: PyPI's downloads for the
+# Python package and the extracted driver are built while cargo compiles, and the proofs (coqc,
+# one core, on a copy of the sources in a temporary folder, reusing the theories
+# proofs/extract.sh built) run beside the Python package's build and pytest.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -35,7 +35,18 @@ lap() { local now; now=$(date +%s); printf -v "$1" %d $(( now - started )); star
 scripts/python-tests.sh --dependencies > "$logs/python-dependencies.log" 2>&1 &
 dependencies_pid=$!
 background+=("$dependencies_pid")
+# The OCaml driver extracted from the proofs, which the Rust tests run (proofs/extract.sh: about
+# 30 s of coqc on one core), is built beside the Rust build: built by the first test that needs
+# it, it held both test threads while one core compiled. A failure here is left to those tests,
+# which build it again and say why (or skip loudly under GARTOWEN_SKIP_PROOFS=1).
+extract_pid=
+if command -v coqc >/dev/null && command -v ocamlopt >/dev/null; then
+  proofs/extract.sh target/extracted > "$logs/extract.log" 2>&1 &
+  extract_pid=$!
+  background+=("$extract_pid")
+fi
 cargo test --workspace --no-run -q
+if [ -n "$extract_pid" ]; then wait "$extract_pid" || true; fi
 lap build_s
 cargo test --workspace --no-fail-fast
 lap rust_s
