@@ -304,75 +304,7 @@ pub fn check_equivalent_to_owen(
     let started = Instant::now();
     let (verdict, detail, value) = match variance_ratios(with_seed, base, width, seeds) {
         Err(e) => (Verdict::Fail, format!("could not scramble: {e}"), None),
-        Ok(ratios) => {
-            let judged = judge_statistics(&ratios, base.q(), seeds, margin);
-            let unjudged: Vec<String> = ratios
-                .boxes
-                .iter()
-                .filter(|l| {
-                    let name = format!("box level {}", l.level);
-                    judged.iter().all(|(k, _)| *k != name)
-                })
-                .map(|l| {
-                    format!(
-                        "box level {} not judged ({:.0} expected hits, fewer than {MIN_EXPECTED_HITS})",
-                        l.level,
-                        expected_hits(seeds, base.q(), l.level)
-                    )
-                })
-                .collect();
-            if judged.is_empty() {
-                (
-                    Verdict::Fail,
-                    format!(
-                        "equivalence not shown: {} at {seeds} seeds (add --equivalence-seeds)",
-                        unjudged.join("; ")
-                    ),
-                    None,
-                )
-            } else {
-                let all_equivalent = judged
-                    .iter()
-                    .all(|(_, e)| e.verdict == EquivalenceVerdict::Equivalent);
-                let worst = judged
-                    .iter()
-                    .map(|(_, e)| e.ratio)
-                    .max_by(|a, b| (a.ln().abs()).total_cmp(&b.ln().abs()));
-                let mut parts: Vec<String> = judged
-                    .iter()
-                    .map(|(name, e)| {
-                        format!(
-                            "{name}: ratio {:.3}, 90% [{:.3}, {:.3}], {} (detects ±{:.1}% at power 0.8)",
-                            e.ratio,
-                            e.tost_interval[0],
-                            e.tost_interval[1],
-                            e.words(),
-                            e.detectable * 100.0
-                        )
-                    })
-                    .collect();
-                parts.extend(unjudged);
-                if let Some(d) = ratios.translates.filter(|d| d.translate_pairs > 0) {
-                    parts.push(format!("diagonal diagnosis: {}", d.words()));
-                }
-                (
-                    if all_equivalent {
-                        Verdict::Pass
-                    } else {
-                        Verdict::Fail
-                    },
-                    format!(
-                        "estimator variances and diagonal-cell error moments / exact Owen values (base {}, {seeds} seeds, margin ±{:.0}%, α = {}, 'different' Bonferroni over {} statistics): {}",
-                        base.base(),
-                        margin * 100.0,
-                        crate::equivalence::DEFAULT_ALPHA,
-                        judged.len(),
-                        parts.join("; ")
-                    ),
-                    worst,
-                )
-            }
-        }
+        Ok(ratios) => judge_ratios(&ratios, base, seeds, margin),
     };
     CheckResult {
         check: "equivalent-to-owen".into(),
@@ -384,6 +316,83 @@ pub fn check_equivalent_to_owen(
         p_value: None,
         alpha: Some(crate::equivalence::DEFAULT_ALPHA),
         tests: Vec::new(),
+    }
+}
+
+/// The verdict of [`check_equivalent_to_owen`] on ratios already measured over `seeds` seeds:
+/// (verdict, detail, the ratio farthest from 1).
+fn judge_ratios(
+    ratios: &VarianceRatios,
+    base: PowerOfTwoBase,
+    seeds: u64,
+    margin: f64,
+) -> (Verdict, String, Option<f64>) {
+    let judged = judge_statistics(ratios, base.q(), seeds, margin);
+    let unjudged: Vec<String> = ratios
+        .boxes
+        .iter()
+        .filter(|l| {
+            let name = format!("box level {}", l.level);
+            judged.iter().all(|(k, _)| *k != name)
+        })
+        .map(|l| {
+            format!(
+                "box level {} not judged ({:.0} expected hits, fewer than {MIN_EXPECTED_HITS})",
+                l.level,
+                expected_hits(seeds, base.q(), l.level)
+            )
+        })
+        .collect();
+    if judged.is_empty() {
+        (
+            Verdict::Fail,
+            format!(
+                "equivalence not shown: {} at {seeds} seeds (add --equivalence-seeds)",
+                unjudged.join("; ")
+            ),
+            None,
+        )
+    } else {
+        let all_equivalent = judged
+            .iter()
+            .all(|(_, e)| e.verdict == EquivalenceVerdict::Equivalent);
+        let worst = judged
+            .iter()
+            .map(|(_, e)| e.ratio)
+            .max_by(|a, b| (a.ln().abs()).total_cmp(&b.ln().abs()));
+        let mut parts: Vec<String> = judged
+            .iter()
+            .map(|(name, e)| {
+                format!(
+                    "{name}: ratio {:.3}, 90% [{:.3}, {:.3}], {} (detects ±{:.1}% at power 0.8)",
+                    e.ratio,
+                    e.tost_interval[0],
+                    e.tost_interval[1],
+                    e.words(),
+                    e.detectable * 100.0
+                )
+            })
+            .collect();
+        parts.extend(unjudged);
+        if let Some(d) = ratios.translates.as_ref().filter(|d| d.translate_pairs > 0) {
+            parts.push(format!("diagonal diagnosis: {}", d.words()));
+        }
+        (
+            if all_equivalent {
+                Verdict::Pass
+            } else {
+                Verdict::Fail
+            },
+            format!(
+                "estimator variances and diagonal-cell error moments / exact Owen values (base {}, {seeds} seeds, margin ±{:.0}%, α = {}, 'different' Bonferroni over {} statistics): {}",
+                base.base(),
+                margin * 100.0,
+                crate::equivalence::DEFAULT_ALPHA,
+                judged.len(),
+                parts.join("; ")
+            ),
+            worst,
+        )
     }
 }
 
