@@ -193,12 +193,12 @@ pub(crate) fn sum_bounds(kind: Kind, l: Layout) -> Option<(BigRational, BigRatio
 
 /// What [`combine`] needs of one (kind, layout) besides the sums: c0, c1 and the factors
 /// ε/(1 − ε) of `to_computed` for S1 and S2 (None where [`sum_bounds`] is None). A pure
-/// function of its key, computed in exact rationals.
+/// function of its key, computed in exact rationals and kept in the form `combine` uses.
 #[derive(Debug)]
 pub(crate) struct LayoutConstants {
-    c0: BigRational,
-    c1: BigRational,
-    to_computed: Option<(BigRational, BigRational)>,
+    c0: Unreduced,
+    c1: Unreduced,
+    to_computed: Option<(Unreduced, Unreduced)>,
 }
 
 /// Layouts whose constants are kept: replicate runs (a mean D² over seeds) ask for one layout
@@ -218,10 +218,10 @@ pub(crate) fn layout_constants(kind: Kind, l: Layout) -> std::sync::Arc<LayoutCo
         return c.clone();
     }
     let one = BigRational::one();
-    let factor = |eps: BigRational| &eps / (&one - &eps);
+    let factor = |eps: BigRational| Unreduced::of(&(&eps / (&one - &eps)));
     let computed = Arc::new(LayoutConstants {
-        c0: crate::rational::c0(kind, l.d),
-        c1: crate::rational::c1(kind, l.d),
+        c0: Unreduced::of(&crate::rational::c0(kind, l.d)),
+        c1: Unreduced::of(&crate::rational::c1(kind, l.d)),
         to_computed: (l.n > 0 && l.d > 0)
             .then(|| sum_bounds(kind, l))
             .flatten()
@@ -254,7 +254,8 @@ pub(crate) fn combine(
     if ![s1.hi, s1.lo, s2.hi, s2.lo].iter().all(|x| x.is_finite()) {
         // The sums overflowed (outside the hypotheses): the f64 combination, no bound.
         let nf = n as f64;
-        let value = crate::rational::to_f64(c0) + kind.c1(d) * s1.hi / nf + s2.hi / nf / nf;
+        let value =
+            crate::rational::to_f64(&c0.to_ratio()) + kind.c1(d) * s1.hi / nf + s2.hi / nf / nf;
         return (value, None);
     }
     // Exact, without a gcd per step (the values are those of the reduced rationals).
@@ -262,7 +263,6 @@ pub(crate) fn combine(
     let dyadic = |x: f64| Unreduced::of(&q(x));
     let s1q = dyadic(s1.hi).add(&dyadic(s1.lo));
     let s2q = dyadic(s2.hi).add(&dyadic(s2.lo));
-    let (c0, c1) = (Unreduced::of(c0), Unreduced::of(c1));
     let vq = c0.add(&c1.mul(&s1q).div(&nn)).add(&s2q.div(&n2));
     let value = crate::rational::to_f64(&vq.to_ratio());
     let Some((k1, k2)) = constants.to_computed.as_ref().filter(|_| bounded) else {
@@ -272,8 +272,8 @@ pub(crate) fn combine(
         return (value, None);
     }
     // to_computed: |Ŝ − S| ≤ ε/(1 − ε)·Ŝ.
-    let e1 = Unreduced::of(k1).mul(&s1q.abs());
-    let e2 = Unreduced::of(k2).mul(&s2q.abs());
+    let e1 = k1.mul(&s1q.abs());
+    let e2 = k2.mul(&s2q.abs());
     let e = c1.abs().mul(&e1).div(&nn).add(&e2.div(&n2));
     if e >= vq.abs() {
         return (value, None);
